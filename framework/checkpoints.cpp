@@ -1,0 +1,81 @@
+#include "framework/checkpoints.hpp"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "framework/error.hpp"
+
+namespace fw {
+
+std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab) {
+    return load_checkpoints(lab, lab_path(lab.info, "checkpoints.json"));
+}
+
+std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot read checkpoints file '" + path + "' of lab '" + lab.info.id + "'");
+    nlohmann::json doc;
+    try {
+        doc = nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw Error(path + ": not valid JSON: " + e.what());
+    }
+    auto fail = [&](const std::string& what) { throw Error(path + ": " + what); };
+    if (!doc.is_object() || !doc.contains("checkpoints") || !doc["checkpoints"].is_array())
+        fail("expected an object with a \"checkpoints\" array");
+
+    std::vector<Checkpoint> out;
+    std::set<std::string> names;
+    for (const auto& item : doc["checkpoints"]) {
+        Checkpoint cp;
+        if (!item.is_object() || !item.contains("name") || !item["name"].is_string())
+            fail("every checkpoint needs a string \"name\"");
+        cp.name = item["name"].get<std::string>();
+        std::string where = "checkpoint '" + cp.name + "': ";
+        if (!names.insert(cp.name).second) fail(where + "the name is used twice");
+        for (const auto& [key, value] : item.items())
+            if (key != "name" && key != "visibility" && key != "description" && key != "params" &&
+                key != "checks")
+                fail(where + "unknown field \"" + key +
+                     "\"; fields are name, visibility, description, params, checks");
+        cp.visibility = item.value("visibility", std::string("visible"));
+        if (cp.visibility != "visible" && cp.visibility != "hidden")
+            fail(where + "visibility must be \"visible\" or \"hidden\", not \"" + cp.visibility + "\"");
+        cp.description = item.value("description", std::string());
+        if (item.contains("params")) {
+            if (!item["params"].is_object()) fail(where + "\"params\" must be an object");
+            cp.params = item["params"];
+        }
+        if (item.contains("checks")) {
+            if (!item["checks"].is_array()) fail(where + "\"checks\" must be an array");
+            cp.checks = item["checks"];
+        }
+        try {
+            checkpoint_params(lab, cp);
+        } catch (const Error& e) {
+            fail(where + e.what());
+        }
+        out.push_back(std::move(cp));
+    }
+    return out;
+}
+
+const Checkpoint& find_checkpoint(const std::vector<Checkpoint>& all, const std::string& name,
+                                  const std::string& lab_id) {
+    std::string names;
+    for (const Checkpoint& cp : all) {
+        if (cp.name == name) return cp;
+        names += (names.empty() ? "" : ", ") + cp.name;
+    }
+    throw UsageError("lab '" + lab_id + "' has no checkpoint '" + name + "'; its checkpoints are: " +
+                     (names.empty() ? "(none)" : names));
+}
+
+ParamValues checkpoint_params(const RegisteredLab& lab, const Checkpoint& cp) {
+    ParamValues values = default_params(lab);
+    for (const auto& [key, value] : cp.params.items()) values.set_json(key, value);
+    return values;
+}
+
+}  // namespace fw

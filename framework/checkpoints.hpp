@@ -1,0 +1,44 @@
+// Checkpoints: named parameter sets with points and checks, read from the
+// data file beside the lab (labs/NN_name/checkpoints.json; JSON with //
+// comments allowed). `lab` only reads names and parameters; `course` alone
+// reads the checks and decides pass or fail.
+//
+//   {"checkpoints": [
+//     {"name": "order_depth", "visibility": "visible",
+//      "params": {"scene": "order", "depth_test": true},
+//      "checks": [{"kind": "image", "points": 2},
+//                 {"kind": "probe", "at": [256, 256], "color": [0, 0, 1], "points": 1}]}
+//   ]}
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "framework/lab.hpp"
+
+namespace fw {
+
+struct Checkpoint {
+    std::string name;
+    std::string visibility = "visible";  // "visible" or "hidden"
+    std::string description;
+    nlohmann::json params = nlohmann::json::object();  // name -> value, as written
+    nlohmann::json checks = nlohmann::json::array();   // raw; interpreted by `course`
+};
+
+// Reads and validates the lab's checkpoints file: every parameter name and
+// value is checked against the lab's declaration, names must be unique.
+// Throws Error with the file path (and line for JSON syntax errors).
+std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab);
+std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::string& path);
+
+// Throws UsageError listing the valid names.
+const Checkpoint& find_checkpoint(const std::vector<Checkpoint>& all, const std::string& name,
+                                  const std::string& lab_id);
+
+// Defaults, then the checkpoint's values.
+ParamValues checkpoint_params(const RegisteredLab& lab, const Checkpoint& cp);
+
+}  // namespace fw

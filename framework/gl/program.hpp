@@ -1,0 +1,114 @@
+// fw::Program: linked shader stages plus checked uniform setters.
+//
+//   auto prog = fw::Program::from_files({"00_pipeline/basic.vert", "00_pipeline/basic.frag"});
+//   prog.set("u_mvp", mvp);     // throws if basic.* has no active mat4 u_mvp
+//   prog.use();
+//
+// Uniforms are set with glProgramUniform*, so set() works whether or not the
+// program is in use. Each active uniform's location, type and array size is
+// read once at link time; set() checks the name, type and size against them
+// and throws fw::Error naming the program's files and its active uniforms,
+// instead of GL's silent "location -1 is ignored".
+#pragma once
+
+#include <glad/gl.h>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "framework/gl/handle.hpp"
+#include "framework/gl/shader.hpp"
+
+namespace fw {
+
+// One active uniform of the default block.
+struct UniformInfo {
+    std::string name;     // as GL reports it: "u_color", "u_lights[0]", "u_mat.kd"
+    GLint location = -1;
+    GLenum type = 0;      // GL_FLOAT_VEC3, GL_SAMPLER_2D, ...
+    bool is_array = false;
+    GLint array_size = 1;    // elements in the whole array (1 if not an array)
+    GLint first_element = 0; // for "u_w[2]": 2; set() may write array_size - first_element
+};
+
+// "vec3", "mat4", "sampler2D"... for a uniform type; "0x8B52" if unknown.
+std::string glsl_type_name(GLenum type);
+
+class Program {
+public:
+    Program() = default;
+
+    // Compiles every file (relative to shader_dir() or absolute; stage from
+    // the extension) and links them. `label` defaults to the file names
+    // joined: "00_pipeline/basic.vert + basic.frag".
+    static Program from_files(const std::vector<std::string>& files, std::string label = {});
+    static Program from_shaders(std::vector<Shader> shaders, std::string label = {});
+
+    GLuint id() const { return handle_.get(); }
+    // glUseProgram(id()).
+    void use() const;
+    const std::vector<std::string>& files() const { return files_; }
+    const std::string& label() const { return label_; }
+
+    // Scalars, vectors and matrices. bool uniforms take bool or int, sampler
+    // and image uniforms take int (the texture unit).
+    void set(const std::string& name, float v) const;
+    void set(const std::string& name, double v) const;  // so set("x", 0.5) works
+    void set(const std::string& name, int v) const;
+    void set(const std::string& name, unsigned v) const;
+    void set(const std::string& name, bool v) const;
+    void set(const std::string& name, const glm::vec2& v) const;
+    void set(const std::string& name, const glm::vec3& v) const;
+    void set(const std::string& name, const glm::vec4& v) const;
+    void set(const std::string& name, const glm::ivec2& v) const;
+    void set(const std::string& name, const glm::ivec3& v) const;
+    void set(const std::string& name, const glm::ivec4& v) const;
+    void set(const std::string& name, const glm::uvec2& v) const;
+    void set(const std::string& name, const glm::uvec3& v) const;
+    void set(const std::string& name, const glm::uvec4& v) const;
+    void set(const std::string& name, const glm::mat2& v) const;
+    void set(const std::string& name, const glm::mat3& v) const;
+    void set(const std::string& name, const glm::mat4& v) const;
+
+    // Arrays, from element 0 ("u_w" or "u_w[0]") or from element i ("u_w[2]").
+    // More values than the array holds from there is an error; fewer is fine.
+    void set(const std::string& name, const std::vector<float>& v) const;
+    void set(const std::string& name, const std::vector<int>& v) const;
+    void set(const std::string& name, const std::vector<glm::vec2>& v) const;
+    void set(const std::string& name, const std::vector<glm::vec3>& v) const;
+    void set(const std::string& name, const std::vector<glm::vec4>& v) const;
+    void set(const std::string& name, const std::vector<glm::ivec2>& v) const;
+    void set(const std::string& name, const std::vector<glm::ivec3>& v) const;
+    void set(const std::string& name, const std::vector<glm::ivec4>& v) const;
+    void set(const std::string& name, const std::vector<glm::mat3>& v) const;
+    void set(const std::string& name, const std::vector<glm::mat4>& v) const;
+
+    bool has_uniform(const std::string& name) const;
+    // nullptr if `name` is not an active uniform.
+    const UniformInfo* uniform(const std::string& name) const;
+    // Active uniforms sorted by name: "u_color: vec3, u_lights[0]: vec3[4], u_mvp: mat4".
+    std::string describe_uniforms() const;
+
+private:
+    // Looks `name` up, checks that a value of GLSL type `given` may be
+    // stored there (`count`: -1 for a plain value, else the number of array
+    // elements) and returns its location; throws fw::Error otherwise.
+    GLint checked_location(const std::string& name, GLenum given, GLsizei count) const;
+    [[noreturn]] void throw_unknown(const std::string& name) const;
+    std::string files_text() const;
+    void load_uniforms();
+
+    detail::Handle handle_;
+    std::vector<std::string> files_;
+    std::string label_;
+    // Every active uniform, plus for arrays "name" and each "name[i]".
+    std::map<std::string, UniformInfo> uniforms_;
+    // (file, source) of each stage, to tell "optimised out" from "misspelt".
+    std::vector<std::pair<std::string, std::string>> sources_;
+};
+
+}  // namespace fw

@@ -1,0 +1,71 @@
+// fw::Shader: one compiled GLSL stage. Programs are usually made straight
+// from files (fw::Program::from_files); a Shader on its own is for tests and
+// for sharing a stage between programs.
+//
+// A compile error throws fw::Error with the file, the stage, the compiler's
+// log and the offending source lines:
+//   shaders/tests/broken.frag:12: fragment shader failed to compile:
+//     0:12(13): error: `foo' undeclared
+//     12 |     color = foo;
+#pragma once
+
+#include <glad/gl.h>
+
+#include <string>
+
+#include "framework/gl/handle.hpp"
+
+namespace fw {
+
+enum class Stage { Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute };
+
+// GL_VERTEX_SHADER ... and "vertex", "tessellation control", ... for messages.
+GLenum gl_shader_type(Stage stage);
+const char* stage_name(Stage stage);
+// From the file extension: .vert .tesc .tese .geom .frag .comp. Anything else
+// throws UsageError listing them.
+Stage stage_from_path(const std::string& path);
+
+// The directory shaders are read from: $LAB_SHADER_DIR if set, else the
+// source tree's shaders/ (LAB_SOURCE_DIR "/shaders").
+std::string shader_dir();
+// `relative` resolved against shader_dir(); an absolute path is returned as is.
+std::string shader_path(const std::string& relative);
+
+// The compile error text shown above, from a raw info log. Understands
+// Mesa's "0:12(5): error: ..." and NVIDIA's "0(12) : error C1008: ..." line
+// numbers; other lines are passed through. `path` is what the message shows.
+std::string format_compile_error(const std::string& path, Stage stage, const std::string& log,
+                                 const std::string& source);
+// The source line number a log line refers to, or 0 if it names none.
+int log_line_number(const std::string& log_line);
+
+class Shader {
+public:
+    Shader() = default;
+
+    // Reads and compiles `path` (absolute, or relative to shader_dir()); the
+    // stage comes from its extension. Throws fw::Error naming the path if
+    // the file cannot be read or does not compile.
+    static Shader from_file(const std::string& path);
+    // Compiles `source`; `name` stands for the file in messages and labels.
+    static Shader from_source(Stage stage, const std::string& source, const std::string& name);
+
+    GLuint id() const { return handle_.get(); }
+    Stage stage() const { return stage_; }
+    // The resolved path (or the name given to from_source).
+    const std::string& path() const { return path_; }
+    const std::string& source() const { return source_; }
+
+private:
+    detail::Handle handle_;
+    Stage stage_ = Stage::Vertex;
+    std::string path_;
+    std::string source_;
+};
+
+// How a path is shown in messages: relative to the source tree when inside
+// it ("shaders/tests/broken.frag"), else as given.
+std::string display_path(const std::string& path);
+
+}  // namespace fw

@@ -1,0 +1,126 @@
+#include "framework/gl/vertex_array.hpp"
+
+#include "framework/error.hpp"
+#include "framework/gl/debug.hpp"
+
+namespace fw {
+
+namespace {
+
+std::string quoted(const std::string& label) {
+    return label.empty() ? std::string("(unlabelled)") : "'" + label + "'";
+}
+
+std::size_t index_size_of(GLenum type) {
+    switch (type) {
+        case GL_UNSIGNED_BYTE: return 1;
+        case GL_UNSIGNED_SHORT: return 2;
+        case GL_UNSIGNED_INT: return 4;
+        default: return 0;
+    }
+}
+
+}  // namespace
+
+VertexLayout& VertexLayout::add(const VertexAttribute& a) {
+    for (const VertexAttribute& b : attributes_)
+        if (b.location == a.location)
+            throw UsageError("VertexLayout: location " + std::to_string(a.location) +
+                             " is given two attributes; each shader input needs its own");
+    if (a.components < 1 || a.components > 4)
+        throw UsageError("VertexAttribute.components must be 1 to 4 (location " +
+                         std::to_string(a.location) + " has " + std::to_string(a.components) +
+                         ")");
+    attributes_.push_back(a);
+    return *this;
+}
+
+VertexArray::VertexArray(const VertexArrayDesc& desc) : label_(desc.label) {
+    const std::string where = " (vertex array " + quoted(label_) + ")";
+    if (!desc.vertices || desc.vertices->id() == 0)
+        throw UsageError("VertexArrayDesc.vertices must point to a created Buffer" + where);
+    const VertexLayout& layout = desc.layout;
+    if (layout.attributes().empty())
+        throw UsageError("VertexArrayDesc.layout has no attributes; add them with .attr()" +
+                         where);
+    if (layout.stride() == 0)
+        throw UsageError("VertexArrayDesc.layout has stride 0; use VertexLayout::of<Vertex>()" +
+                         where);
+    index_size_ = index_size_of(desc.index_type);
+    if (index_size_ == 0)
+        throw UsageError("VertexArrayDesc.index_type must be GL_UNSIGNED_BYTE, "
+                         "GL_UNSIGNED_SHORT or GL_UNSIGNED_INT, not " +
+                         gl_enum_name(desc.index_type) + where);
+    if (desc.indices && desc.indices->id() == 0)
+        throw UsageError("VertexArrayDesc.indices points to an empty Buffer" + where);
+    GLint max_attribs = 0;
+    glGetIntegerv(GL_MAX_VERTEX_ATTRIBS, &max_attribs);
+    for (const VertexAttribute& a : layout.attributes())
+        if (a.location >= static_cast<GLuint>(max_attribs))
+            throw UsageError("VertexAttribute.location " + std::to_string(a.location) +
+                             " is not below GL_MAX_VERTEX_ATTRIBS (" +
+                             std::to_string(max_attribs) + ")" + where);
+
+    GLuint id = 0;
+    glGenVertexArrays(1, &id);
+    handle_ = detail::Handle(id, [](GLuint name) { glDeleteVertexArrays(1, &name); });
+
+    GLint previous = 0;
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previous);
+    glBindVertexArray(id);
+    // Binding point 0 holds the vertex buffer; every attribute reads from it.
+    constexpr GLuint kBinding = 0;
+    for (const VertexAttribute& a : layout.attributes()) {
+        glEnableVertexAttribArray(a.location);
+        auto offset = static_cast<GLuint>(a.offset);
+        if (a.integer)
+            glVertexAttribIFormat(a.location, a.components, a.type, offset);
+        else
+            glVertexAttribFormat(a.location, a.components, a.type,
+                                 a.normalized ? GL_TRUE : GL_FALSE, offset);
+        glVertexAttribBinding(a.location, kBinding);
+    }
+    glBindVertexBuffer(kBinding, desc.vertices->id(), 0, static_cast<GLsizei>(layout.stride()));
+    // The element array binding is part of the vertex array's state: binding
+    // it here, while the vertex array is bound, is what attaches the indices.
+    if (desc.indices) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, desc.indices->id());
+    glBindVertexArray(static_cast<GLuint>(previous));
+
+    vertex_count_ = desc.vertices->size() / layout.stride();
+    has_indices_ = desc.indices != nullptr;
+    index_count_ = has_indices_ ? desc.indices->size() / index_size_ : 0;
+    index_type_ = desc.index_type;
+    set_object_label(GL_VERTEX_ARRAY, id, label_);
+}
+
+void VertexArray::bind() const { glBindVertexArray(id()); }
+
+void VertexArray::draw(GLenum mode, GLsizei count, GLint first) const {
+    if (id() == 0) throw UsageError("VertexArray::draw on an empty VertexArray");
+    if (first < 0 || count < 0 ||
+        static_cast<std::size_t>(first) + static_cast<std::size_t>(count) > vertex_count_)
+        throw UsageError("VertexArray " + quoted(label_) + ": draw of vertices [" +
+                         std::to_string(first) + ", " + std::to_string(first + count) +
+                         ") but its vertex buffer holds " + std::to_string(vertex_count_));
+    bind();
+    glDrawArrays(mode, first, count);
+}
+
+void VertexArray::draw_indexed(GLenum mode, GLsizei count, std::size_t first_index) const {
+    if (id() == 0) throw UsageError("VertexArray::draw_indexed on an empty VertexArray");
+    if (!has_indices_)
+        throw UsageError("VertexArray " + quoted(label_) +
+                         " has no index buffer: set VertexArrayDesc.indices, or use draw()");
+    if (count < 0 || first_index + static_cast<std::size_t>(count) > index_count_)
+        throw UsageError("VertexArray " + quoted(label_) + ": draw_indexed of indices [" +
+                         std::to_string(first_index) + ", " +
+                         std::to_string(first_index + static_cast<std::size_t>(count)) +
+                         ") but its index buffer holds " + std::to_string(index_count_));
+    bind();
+    // With an element array buffer bound, the "indices" pointer argument is
+    // a byte offset into that buffer.
+    const void* offset = reinterpret_cast<const void*>(first_index * index_size_);
+    glDrawElements(mode, count, index_type_, offset);
+}
+
+}  // namespace fw

@@ -1,0 +1,232 @@
+// PNG via stb (libstb), PFM by hand, and the fuzzy image comparison.
+#include "framework/image.hpp"
+
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "framework/error.hpp"
+
+namespace fw {
+
+namespace {
+
+void check_size(const char* what, int w, int h) {
+    if (w < 0 || h < 0)
+        throw UsageError(std::string(what) + " size " + std::to_string(w) + "x" +
+                         std::to_string(h) + " is negative");
+}
+
+// The whole file as bytes; throws naming the path and what went wrong.
+std::string read_file(const std::string& path, const char* kind) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        throw Error("cannot read " + std::string(kind) + " '" + path + "': file not found");
+    errno = 0;
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error("cannot read " + std::string(kind) + " '" + path + "': " +
+                    (errno ? std::strerror(errno) : "cannot open it"));
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// Rows of `src` in the opposite order: GL's bottom-first <-> PNG's top-first.
+std::vector<Rgba8> flip_rows(const std::vector<Rgba8>& src, int w, int h) {
+    std::vector<Rgba8> out(src.size());
+    for (int y = 0; y < h; ++y)
+        std::copy_n(src.begin() + static_cast<long>(y) * w, w,
+                    out.begin() + static_cast<long>(h - 1 - y) * w);
+    return out;
+}
+
+}  // namespace
+
+Image::Image(int w, int h, Rgba8 fill) : width(w), height(h) {
+    check_size("Image", w, h);
+    pixels.assign(static_cast<size_t>(w) * h, fill);
+}
+
+DepthImage::DepthImage(int w, int h, float fill) : width(w), height(h) {
+    check_size("DepthImage", w, h);
+    values.assign(static_cast<size_t>(w) * h, fill);
+}
+
+// ---- PNG -------------------------------------------------------------------
+
+void write_png(const std::string& path, const Image& img) {
+    if (img.width <= 0 || img.height <= 0 ||
+        img.pixels.size() != static_cast<size_t>(img.width) * img.height)
+        throw Error("cannot write PNG '" + path + "': image is " + std::to_string(img.width) +
+                    "x" + std::to_string(img.height) + " with " +
+                    std::to_string(img.pixels.size()) + " pixels");
+    static_assert(sizeof(Rgba8) == 4, "Rgba8 must be 4 tightly packed bytes");
+    std::vector<Rgba8> top_first = flip_rows(img.pixels, img.width, img.height);
+    if (!stbi_write_png(path.c_str(), img.width, img.height, 4, top_first.data(), img.width * 4))
+        throw Error("cannot write PNG '" + path +
+                    "': check that its directory exists and is writable");
+}
+
+Image read_png(const std::string& path) {
+    std::string bytes = read_file(path, "PNG");
+    static const char signature[] = "\x89PNG\r\n\x1a\n";
+    if (bytes.compare(0, 8, signature, 8) != 0)
+        throw Error("cannot read PNG '" + path + "': not a PNG file");
+    int w = 0, h = 0, channels = 0;
+    // Asking for 4 components converts grey, grey+alpha and RGB to RGBA8.
+    stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                          static_cast<int>(bytes.size()), &w, &h, &channels, 4);
+    if (!data)
+        throw Error("cannot read PNG '" + path + "': " + stbi_failure_reason());
+    Image img(w, h);
+    std::memcpy(img.pixels.data(), data, img.pixels.size() * 4);
+    stbi_image_free(data);
+    img.pixels = flip_rows(img.pixels, w, h);
+    return img;
+}
+
+// ---- PFM -------------------------------------------------------------------
+
+void write_pfm(const std::string& path, const DepthImage& img) {
+    if (img.values.size() != static_cast<size_t>(img.width) * img.height)
+        throw Error("cannot write PFM '" + path + "': image has the wrong number of values");
+    std::ofstream out(path, std::ios::binary);
+    if (!out)
+        throw Error("cannot write PFM '" + path +
+                    "': check that its directory exists and is writable");
+    // Scale -1.0: the minus sign means little endian (x86 and ARM order, as stored).
+    out << "Pf\n" << img.width << ' ' << img.height << "\n-1.0\n";
+    out.write(reinterpret_cast<const char*>(img.values.data()),
+              static_cast<std::streamsize>(img.values.size() * sizeof(float)));
+    if (!out) throw Error("cannot write PFM '" + path + "': write failed (disk full?)");
+}
+
+DepthImage read_pfm(const std::string& path) {
+    std::string bytes = read_file(path, "PFM");
+    auto fail = [&](const std::string& why) { return Error("cannot read PFM '" + path + "': " + why); };
+    if (bytes.compare(0, 2, "PF") == 0)
+        throw fail("it is a colour (PF) file; only single-channel depth (Pf) is supported");
+    if (bytes.compare(0, 2, "Pf") != 0) throw fail("not a PFM file (no 'Pf' header)");
+
+    // Three whitespace-separated tokens after "Pf", then exactly one whitespace byte.
+    size_t pos = 2;
+    auto token = [&]() {
+        while (pos < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
+        size_t start = pos;
+        while (pos < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
+        return bytes.substr(start, pos - start);
+    };
+    std::string ws = token(), hs = token(), ss = token();
+    char* end = nullptr;
+    long w = std::strtol(ws.c_str(), &end, 10);
+    bool ok = !ws.empty() && *end == '\0';
+    long h = std::strtol(hs.c_str(), &end, 10);
+    ok = ok && !hs.empty() && *end == '\0';
+    double scale = std::strtod(ss.c_str(), &end);
+    ok = ok && !ss.empty() && *end == '\0' && scale != 0.0 && pos < bytes.size();
+    if (!ok || w < 0 || h < 0 || w > 65536 || h > 65536)
+        throw fail("malformed header; expected \"Pf\\n<width> <height>\\n-1.0\\n\"");
+    ++pos;  // the single whitespace byte that ends the header
+
+    size_t need = static_cast<size_t>(w) * h * sizeof(float);
+    if (bytes.size() - pos < need)
+        throw fail("truncated: " + std::to_string(w) + "x" + std::to_string(h) + " needs " +
+                   std::to_string(need) + " bytes of data, file has " +
+                   std::to_string(bytes.size() - pos));
+    // A positive scale means big-endian floats: reverse each 4-byte group.
+    if (scale > 0)
+        for (size_t i = pos; i < pos + need; i += 4) {
+            std::swap(bytes[i], bytes[i + 3]);
+            std::swap(bytes[i + 1], bytes[i + 2]);
+        }
+    DepthImage img(static_cast<int>(w), static_cast<int>(h));
+    std::memcpy(img.values.data(), bytes.data() + pos, need);
+    return img;
+}
+
+// ---- Comparison --------------------------------------------------------------
+
+namespace {
+
+int channel_error(Rgba8 a, Rgba8 b) {
+    return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b),
+                     std::abs(a.a - b.a)});
+}
+
+// Failed pixels: dim red just over the tolerance, brightening to yellow at 255.
+Rgba8 heat(int error, int tolerance) {
+    double t = tolerance >= 255 ? 1.0 : double(error - tolerance) / (255 - tolerance);
+    t = std::clamp(t, 0.0, 1.0);
+    auto u8 = [](double v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0) + 0.5); };
+    return {u8(96 + 159 * std::min(1.0, 2 * t)), u8(255 * std::max(0.0, 2 * t - 1)), 0, 255};
+}
+
+}  // namespace
+
+CompareResult compare_images(const Image& actual, const Image& expected, const CompareOptions& opt) {
+    CompareResult res;
+    res.options = opt;
+    res.actual_width = actual.width;
+    res.actual_height = actual.height;
+    res.expected_width = expected.width;
+    res.expected_height = expected.height;
+    if (actual.width != expected.width || actual.height != expected.height) {
+        res.size_mismatch = true;
+        return res;
+    }
+    const int w = actual.width, h = actual.height, r = std::max(0, opt.radius);
+    res.total_pixels = static_cast<long>(w) * h;
+    res.difference = Image(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const Rgba8 a = actual.at(x, y);
+            int best = channel_error(a, expected.at(x, y));
+            // Only pixels that differ in place need the neighbourhood search.
+            for (int ny = std::max(0, y - r); best > opt.tolerance && ny <= std::min(h - 1, y + r); ++ny)
+                for (int nx = std::max(0, x - r); nx <= std::min(w - 1, x + r); ++nx)
+                    best = std::min(best, channel_error(a, expected.at(nx, ny)));
+            res.max_channel_error = std::max(res.max_channel_error, best);
+            if (best > opt.tolerance) {
+                ++res.failed_pixels;
+                res.difference.at(x, y) = heat(best, opt.tolerance);
+            } else {
+                // A quarter of the luminance, so the viewer still sees the shape.
+                auto grey = static_cast<std::uint8_t>(
+                    0.25 * (0.2126 * a.r + 0.7152 * a.g + 0.0722 * a.b) + 0.5);
+                res.difference.at(x, y) = {grey, grey, grey, 255};
+            }
+        }
+    res.failed_fraction = res.total_pixels ? double(res.failed_pixels) / res.total_pixels : 0.0;
+    // The epsilon keeps "exactly at the limit" passing despite rounding in the division.
+    res.passed = res.failed_fraction <= opt.max_failed_fraction + 1e-12;
+    return res;
+}
+
+std::string CompareResult::summary() const {
+    char line[320];
+    if (size_mismatch) {
+        std::snprintf(line, sizeof line,
+                      "size mismatch: actual image is %dx%d, expected %dx%d", actual_width,
+                      actual_height, expected_width, expected_height);
+        return line;
+    }
+    const int n = 2 * std::max(0, options.radius) + 1;
+    std::snprintf(line, sizeof line,
+                  "%ld of %ld pixels (%.3g%%) differ by more than %d/255 (%dx%d neighbourhood, "
+                  "largest error %d/255); limit %.3g%%: %s",
+                  failed_pixels, total_pixels, 100.0 * failed_fraction, options.tolerance, n, n,
+                  max_channel_error, 100.0 * options.max_failed_fraction, passed ? "pass" : "FAIL");
+    return line;
+}
+
+}  // namespace fw

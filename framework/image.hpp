@@ -1,0 +1,78 @@
+// Images read back from GL and written to disk: RGBA8 colour (PNG) and float
+// depth (PFM), plus the fuzzy comparison that SPEC.md's `image` check uses.
+//
+// Storage follows GL: row 0 is the BOTTOM row (window y = 0), so pixel
+// (x, y) of an Image is the pixel at GL window coordinates (x + 0.5, y + 0.5).
+// PNG files are written top row first (flipped on write and on read); PFM
+// files are bottom row first, like GL, so they are written as stored.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fw {
+
+struct Rgba8 {
+    std::uint8_t r = 0, g = 0, b = 0, a = 0;
+    bool operator==(const Rgba8& o) const { return r == o.r && g == o.g && b == o.b && a == o.a; }
+    bool operator!=(const Rgba8& o) const { return !(*this == o); }
+};
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<Rgba8> pixels;  // width * height, bottom row first
+
+    Image() = default;
+    Image(int w, int h, Rgba8 fill = {});
+    Rgba8& at(int x, int y) { return pixels[static_cast<size_t>(y) * width + x]; }
+    const Rgba8& at(int x, int y) const { return pixels[static_cast<size_t>(y) * width + x]; }
+};
+
+struct DepthImage {
+    int width = 0, height = 0;
+    std::vector<float> values;  // width * height, bottom row first
+
+    DepthImage() = default;
+    DepthImage(int w, int h, float fill = 0.0f);
+    float& at(int x, int y) { return values[static_cast<size_t>(y) * width + x]; }
+    float at(int x, int y) const { return values[static_cast<size_t>(y) * width + x]; }
+};
+
+// PNG (RGBA, 8 bits per channel). Throw fw::Error naming the path on failure.
+void write_png(const std::string& path, const Image& img);
+Image read_png(const std::string& path);
+
+// PFM, single channel ("Pf"), little-endian float32, rows bottom first:
+// header "Pf\n<width> <height>\n-1.0\n". read_pfm accepts either byte order
+// (the sign of the scale) and rejects colour ("PF") files with a clear error.
+void write_pfm(const std::string& path, const DepthImage& img);
+DepthImage read_pfm(const std::string& path);
+
+// SPEC.md, Checks, `image`: a pixel of `actual` passes when some pixel of
+// `expected` in its (2r+1)x(2r+1) neighbourhood (r = `radius`, default 1: 3x3)
+// is within `tolerance` (0-255) on every channel (RGBA). The image passes when
+// failed_fraction <= max_failed_fraction.
+struct CompareOptions {
+    int tolerance = 8;
+    int radius = 1;
+    double max_failed_fraction = 0.001;
+};
+
+struct CompareResult {
+    bool passed = false;
+    bool size_mismatch = false;  // then nothing else is meaningful
+    long failed_pixels = 0;
+    long total_pixels = 0;
+    double failed_fraction = 0.0;
+    int max_channel_error = 0;   // over all pixels, to the nearest neighbour match
+    Image difference;            // failed pixels dim red -> yellow by error; passing ones dark grey
+    CompareOptions options;      // the thresholds used, for summary()
+    int actual_width = 0, actual_height = 0, expected_width = 0, expected_height = 0;
+    std::string summary() const; // one line: "12 of 262144 pixels (0.0046%) differ by more than 8/255; limit 0.1%"
+};
+
+CompareResult compare_images(const Image& actual, const Image& expected, const CompareOptions& opt = {});
+
+}  // namespace fw

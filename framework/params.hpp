@@ -1,0 +1,102 @@
+// A lab's parameters, declared once. The command line (`--set name=value`),
+// the window's panel and keyboard shortcuts, the checkpoints, `lab list` and
+// the stats all read this one declaration.
+//
+//   fw::Param::choice("scene", {"order", "indexed"}, "order").help("which scene").key('S'),
+//   fw::Param::number("fov", 60).range(10, 150).unit("deg").key('F'),
+//   fw::Param::boolean("depth_test", true).key('D'),
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace fw {
+
+enum class ParamType { Float, Int, Bool, Enum, Color };
+const char* param_type_name(ParamType t);
+
+struct Param {
+    std::string name;
+    ParamType type = ParamType::Float;
+    std::string help_text;
+    std::string unit_text;
+    double default_number = 0.0, min = 0.0, max = 1.0, step_size = 0.0;  // Float, Int
+    bool default_flag = false;                                          // Bool
+    std::vector<std::string> choices;                                   // Enum
+    int default_choice = 0;
+    glm::vec3 default_color{0.0f};  // Color
+    // Window shortcut: a printable key ('A'..'Z', '0'..'9'). Bool toggles,
+    // Enum cycles, numbers step up (with Shift, down). 0 = none.
+    int shortcut = 0;
+
+    static Param number(std::string name, double def);                   // float
+    static Param integer(std::string name, int def);
+    static Param boolean(std::string name, bool def);
+    static Param choice(std::string name, std::vector<std::string> choices, const std::string& def);
+    static Param color(std::string name, const std::string& hex_rrggbb);
+
+    Param& range(double lo, double hi);
+    Param& step(double s);  // keyboard step; default (max - min) / 20, integers 1
+    Param& unit(std::string u);
+    Param& help(std::string h);
+    Param& key(int k);
+
+    double key_step() const;
+    std::string default_text() const;  // as --set would take it
+    std::string range_text() const;    // "[10, 150] deg", "{order, indexed}", "true|false", "hex rrggbb"
+};
+
+// The resolved value of every parameter of one lab.
+class ParamValues {
+public:
+    ParamValues() = default;
+    ParamValues(std::string lab, const std::vector<Param>* params);  // all defaults
+
+    // Parses and validates `text` for parameter `name`; throws UsageError naming
+    // the lab, the parameter and what would be valid.
+    void set(const std::string& name, const std::string& text);
+    // "name=value", as --set takes it.
+    void set_assignment(const std::string& assignment);
+    void set_json(const std::string& name, const nlohmann::json& value);
+
+    float number(const std::string& name) const;  // Float (also Int)
+    int integer(const std::string& name) const;
+    bool flag(const std::string& name) const;
+    const std::string& choice(const std::string& name) const;
+    int choice_index(const std::string& name) const;
+    glm::vec3 color(const std::string& name) const;
+
+    // Direct, validated access for the window panel.
+    double& number_ref(const std::string& name);
+    bool& flag_ref(const std::string& name);
+    int& choice_ref(const std::string& name);
+    glm::vec3& color_ref(const std::string& name);
+
+    std::string text(const std::string& name) const;  // as --set would take it
+    nlohmann::json to_json() const;                    // every resolved value
+    const std::vector<Param>& params() const { return *params_; }
+    const std::string& lab() const { return lab_; }
+
+private:
+    struct Value {
+        double number = 0.0;
+        bool flag = false;
+        int choice = 0;
+        glm::vec3 color{0.0f};
+    };
+    size_t index_of(const std::string& name) const;
+    size_t index_of(const std::string& name, ParamType want) const;
+
+    std::string lab_;
+    const std::vector<Param>* params_ = nullptr;
+    std::vector<Value> values_;
+};
+
+// "ff8000" or "#ff8000" -> (1, 0.502, 0); false if malformed.
+bool parse_hex_color(const std::string& text, glm::vec3& out);
+std::string hex_color(glm::vec3 c);
+
+}  // namespace fw

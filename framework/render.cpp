@@ -1,0 +1,88 @@
+#include "framework/render.hpp"
+
+#include <chrono>
+#include <cstdlib>
+
+#include "framework/error.hpp"
+#include "framework/gl/debug.hpp"
+#include "framework/gl/framebuffer.hpp"
+#include "framework/gl/query.hpp"
+
+namespace fw {
+
+LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
+    : registered_(lab), context_(std::move(context)), lab_(lab.create()) {
+    enable_debug_output();
+    lab_->init(programs_);
+    check_gl(("init of lab " + lab.info.id).c_str());
+}
+
+LabRenderer::~LabRenderer() = default;
+
+RenderOutput LabRenderer::render(const ParamValues& params, int width, int height) {
+    std::string problem = lab_->validate(params);
+    if (!problem.empty()) throw UsageError("lab '" + registered_.info.id + "': " + problem);
+    if (!framebuffer_ || framebuffer_->width() != width || framebuffer_->height() != height) {
+        framebuffer_.reset();
+        framebuffer_ = std::make_unique<Framebuffer>(FramebufferDesc{
+            width, height, "offscreen " + std::to_string(width) + "x" + std::to_string(height)});
+    }
+
+    auto start = std::chrono::steady_clock::now();
+    framebuffer_->bind();
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    Query primitives(GL_PRIMITIVES_GENERATED, "primitives generated");
+    Query elapsed(GL_TIME_ELAPSED, "frame time");
+    primitives.begin();
+    elapsed.begin();
+    lab_->draw(params, Frame{width, height, 0.0});
+    elapsed.end();
+    primitives.end();
+    glFinish();
+    double render_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    check_gl(("draw of lab " + registered_.info.id).c_str());
+
+    RenderOutput out;
+    out.color = framebuffer_->read_color();
+    out.depth = framebuffer_->read_depth();
+    out.stats = {
+        {"lab", registered_.info.id},
+        {"params", params.to_json()},
+        {"backend", context_.backend},
+        {"platform", context_.platform},
+        {"gl_version", context_.gl_version},
+        {"gl_renderer", context_.gl_renderer},
+        {"width", width},
+        {"height", height},
+        {"primitives_generated", primitives.result()},
+        {"render_ms", render_ms},
+        {"gpu_ms", static_cast<double>(elapsed.result()) / 1e6},
+        {"lab_stats", lab_->stats(params)},
+    };
+    check_gl(("read-back of lab " + registered_.info.id).c_str());
+    return out;
+}
+
+void parse_size(const std::string& text, int& width, int& height) {
+    size_t x = text.find('x');
+    auto bad = [&](const std::string& why) {
+        throw UsageError("--size '" + text + "': " + why + "; expected WxH, e.g. 512x512");
+    };
+    if (x == std::string::npos) bad("no 'x'");
+    std::string ws = text.substr(0, x), hs = text.substr(x + 1);
+    char* end = nullptr;
+    long w = std::strtol(ws.c_str(), &end, 10);
+    if (ws.empty() || *end) bad("width '" + ws + "' is not a whole number");
+    long h = std::strtol(hs.c_str(), &end, 10);
+    if (hs.empty() || *end) bad("height '" + hs + "' is not a whole number");
+    if (w <= 0 || h <= 0) bad("width and height must be at least 1");
+    if (w > 65536 || h > 65536) bad("width and height must be at most the GL limit (65536 here at most)");
+    width = static_cast<int>(w);
+    height = static_cast<int>(h);
+}
+
+}  // namespace fw

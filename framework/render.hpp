@@ -1,0 +1,50 @@
+// Draws frames of one lab offscreen, in the current context, into a
+// framework-owned framebuffer, and reads back colour, depth and stats.
+// `lab render`, the tests and the grading child all draw through this.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <string>
+
+#include "framework/context.hpp"
+#include "framework/image.hpp"
+#include "framework/lab.hpp"
+
+namespace fw {
+
+class Framebuffer;
+
+struct RenderOutput {
+    Image color;
+    DepthImage depth;
+    nlohmann::json stats;  // SPEC.md --stats fields, plus "lab_stats"
+};
+
+class LabRenderer {
+public:
+    // Creates the lab and calls its init(); throws what init throws.
+    LabRenderer(const RegisteredLab& lab, ContextInfo context);
+    ~LabRenderer();
+    LabRenderer(const LabRenderer&) = delete;
+    LabRenderer& operator=(const LabRenderer&) = delete;
+
+    // One frame at width x height; throws UsageError for a size of zero or
+    // above the GL limit, or parameters the lab rejects.
+    RenderOutput render(const ParamValues& params, int width, int height);
+
+    Lab& lab() { return *lab_; }
+
+private:
+    const RegisteredLab& registered_;
+    ContextInfo context_;
+    ProgramLibrary programs_;
+    std::unique_ptr<Lab> lab_;
+    std::unique_ptr<Framebuffer> framebuffer_;
+};
+
+// "512x384" -> (512, 384); throws UsageError.
+void parse_size(const std::string& text, int& width, int& height);
+
+}  // namespace fw

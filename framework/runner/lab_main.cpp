@@ -1,0 +1,217 @@
+// `lab`: the labs themselves (SPEC.md, Executables). Lists labs and their
+// checkpoints, renders one frame offscreen, or opens a window.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "framework/checkpoints.hpp"
+#include "framework/context.hpp"
+#include "framework/error.hpp"
+#include "framework/image.hpp"
+#include "framework/lab.hpp"
+#include "framework/render.hpp"
+#if LAB_HAVE_WINDOW
+#include "framework/window/window.hpp"
+#endif
+
+namespace {
+
+using nlohmann::json;
+
+void print_list(bool as_json) {
+    json labs = json::array();
+    for (const fw::RegisteredLab& lab : fw::registered_labs()) {
+        json params = json::array();
+        for (const fw::Param& p : lab.info.params)
+            params.push_back({{"name", p.name}, {"type", fw::param_type_name(p.type)},
+                              {"default", p.default_text()}, {"range", p.range_text()},
+                              {"help", p.help_text}});
+        labs.push_back({{"number", lab.info.number}, {"name", lab.info.id},
+                        {"title", lab.info.title}, {"params", params}});
+    }
+    if (as_json) {
+        std::cout << labs.dump(2) << "\n";
+        return;
+    }
+    for (const json& lab : labs)
+        std::printf("%02d  %-15s %s\n", lab["number"].get<int>(),
+                    lab["name"].get<std::string>().c_str(), lab["title"].get<std::string>().c_str());
+}
+
+void print_checkpoints(const fw::RegisteredLab& lab, bool as_json) {
+    std::vector<fw::Checkpoint> all = fw::load_checkpoints(lab);
+    if (as_json) {
+        json out = json::array();
+        for (const fw::Checkpoint& cp : all)
+            out.push_back({{"name", cp.name}, {"visibility", cp.visibility},
+                           {"description", cp.description},
+                           {"params", fw::checkpoint_params(lab, cp).to_json()},
+                           {"checks", cp.checks.size()}});
+        std::cout << out.dump(2) << "\n";
+        return;
+    }
+    for (const fw::Checkpoint& cp : all) {
+        std::string sets;
+        for (const auto& [key, value] : cp.params.items())
+            sets += " " + key + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+        std::printf("%-28s %-8s%s\n", cp.name.c_str(), cp.visibility.c_str(), sets.c_str());
+    }
+}
+
+fw::ParamValues resolve_params(const fw::RegisteredLab& lab, const std::string& checkpoint,
+                               const std::vector<std::string>& sets) {
+    fw::ParamValues values = fw::default_params(lab);
+    if (!checkpoint.empty()) {
+        std::vector<fw::Checkpoint> all = fw::load_checkpoints(lab);
+        values = fw::checkpoint_params(lab, fw::find_checkpoint(all, checkpoint, lab.info.id));
+    }
+    for (const std::string& s : sets) values.set_assignment(s);
+    return values;
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    if (!(out << text))
+        throw fw::Error("cannot write '" + path + "'; check that its directory exists and is writable");
+}
+
+struct RenderArgs {
+    std::string lab, checkpoint, size = "512x512", backend, output, depth_out, stats;
+    std::vector<std::string> sets;
+};
+
+void render(const RenderArgs& a) {
+    const fw::RegisteredLab& lab = fw::find_lab(a.lab);
+    fw::ParamValues params = resolve_params(lab, a.checkpoint, a.sets);
+    int width = 0, height = 0;
+    fw::parse_size(a.size, width, height);
+    fw::Backend backend = a.backend.empty() ? fw::backend_from_env() : fw::parse_backend(a.backend);
+    auto context = fw::create_offscreen_context(backend);
+    fw::LabRenderer renderer(lab, context->info());
+    fw::RenderOutput out = renderer.render(params, width, height);
+    fw::write_png(a.output, out.color);
+    if (!a.depth_out.empty()) fw::write_pfm(a.depth_out, out.depth);
+    if (!a.stats.empty()) write_text(a.stats, out.stats.dump(2) + "\n");
+}
+
+// Renders every checkpoint of the given labs (all labs when none) in one
+// context into DIR/<lab>/<checkpoint>.{png,pfm,json}.
+void render_checkpoints(const std::vector<std::string>& lab_ids, const std::string& dir,
+                        const std::string& backend_name) {
+    std::vector<const fw::RegisteredLab*> labs;
+    for (const std::string& id : lab_ids) labs.push_back(&fw::find_lab(id));
+    if (labs.empty())
+        for (const fw::RegisteredLab& lab : fw::registered_labs()) labs.push_back(&lab);
+    fw::Backend backend = backend_name.empty() ? fw::backend_from_env() : fw::parse_backend(backend_name);
+    auto context = fw::create_offscreen_context(backend);
+    for (const fw::RegisteredLab* lab : labs) {
+        std::string lab_dir = dir + "/" + lab->info.id;
+        std::error_code ec;
+        std::filesystem::create_directories(lab_dir, ec);
+        if (ec) throw fw::Error("cannot create '" + lab_dir + "': " + ec.message());
+        fw::LabRenderer renderer(*lab, context->info());
+        for (const fw::Checkpoint& cp : fw::load_checkpoints(*lab)) {
+            fw::RenderOutput out = renderer.render(fw::checkpoint_params(*lab, cp), 512, 512);
+            std::string base = lab_dir + "/" + cp.name;
+            fw::write_png(base + ".png", out.color);
+            fw::write_pfm(base + ".pfm", out.depth);
+            write_text(base + ".json", out.stats.dump(2) + "\n");
+            std::printf("%-12s %-28s %s.png\n", lab->info.id.c_str(), cp.name.c_str(), base.c_str());
+        }
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"lab: the OpenGL labs. Render offscreen, open a window, list labs and checkpoints."};
+    app.require_subcommand(1);
+
+    bool json_list = false;
+    auto* list = app.add_subcommand("list", "List the labs");
+    list->add_flag("--json", json_list, "Print JSON with every parameter");
+
+    std::string cp_lab;
+    bool json_cp = false;
+    auto* checkpoints = app.add_subcommand("checkpoints", "List a lab's checkpoints");
+    checkpoints->add_option("LAB", cp_lab, "Lab name")->required();
+    checkpoints->add_flag("--json", json_cp, "Print JSON");
+
+    RenderArgs ra;
+    auto* render_cmd = app.add_subcommand("render", "Draw one frame offscreen into a PNG");
+    render_cmd->add_option("LAB", ra.lab, "Lab name")->required();
+    render_cmd->add_option("--set", ra.sets, "Set a parameter: name=value (repeatable)");
+    render_cmd->add_option("--checkpoint", ra.checkpoint, "Start from this checkpoint's parameters");
+    render_cmd->add_option("--size", ra.size, "Frame size WxH (default 512x512)");
+    render_cmd->add_option("--backend", ra.backend, "auto|osmesa|egl (default $LAB_BACKEND or auto)");
+    render_cmd->add_option("-o,--output", ra.output, "PNG file to write")->required();
+    render_cmd->add_option("--depth-out", ra.depth_out, "Write window-space depth as PFM");
+    render_cmd->add_option("--stats", ra.stats, "Write frame statistics as JSON");
+
+    std::vector<std::string> rc_labs;
+    std::string rc_out = "renders", rc_backend;
+    auto* render_cps = app.add_subcommand(
+        "render-checkpoints", "Render every checkpoint of the labs (all when none) in one context");
+    render_cps->add_option("LAB", rc_labs, "Lab names");
+    render_cps->add_option("--out", rc_out, "Directory to write into (default ./renders)");
+    render_cps->add_option("--backend", rc_backend, "auto|osmesa|egl (default $LAB_BACKEND or auto)");
+
+    std::string run_lab, run_size = "512x512";
+    std::vector<std::string> run_sets;
+    int run_frames = 0;
+    std::string run_screenshot;
+    bool no_ui = false;
+    auto* run = app.add_subcommand("run", "Open the lab in a window with a parameter panel");
+    run->add_option("LAB", run_lab, "Lab name")->required();
+    run->add_option("--set", run_sets, "Set a parameter: name=value (repeatable)");
+    run->add_option("--size", run_size, "Window size WxH (default 512x512)");
+    run->add_option("--frames", run_frames, "Quit after N frames")->check(CLI::NonNegativeNumber);
+    run->add_option("--screenshot", run_screenshot, "Save the last frame to this PNG");
+    run->add_flag("--no-ui", no_ui, "Hide the parameter panel");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "lab: %s\nRun 'lab --help' or 'lab %s --help' for usage.\n", e.what(),
+                     app.get_subcommands().empty() ? "COMMAND"
+                                                   : app.get_subcommands()[0]->get_name().c_str());
+        return 2;
+    }
+
+    try {
+        if (*list) print_list(json_list);
+        if (*checkpoints) print_checkpoints(fw::find_lab(cp_lab), json_cp);
+        if (*render_cmd) render(ra);
+        if (*render_cps) render_checkpoints(rc_labs, rc_out, rc_backend);
+        if (*run) {
+            const fw::RegisteredLab& lab = fw::find_lab(run_lab);
+            fw::ParamValues params = resolve_params(lab, "", run_sets);
+#if LAB_HAVE_WINDOW
+            fw::WindowOptions options;
+            fw::parse_size(run_size, options.width, options.height);
+            options.frames = run_frames;
+            options.screenshot = run_screenshot;
+            options.show_ui = !no_ui;
+            fw::run_window(lab, params, options);
+#else
+            throw fw::EnvironmentError(
+                "this build has no window: GLFW or Dear ImGui (libglfw3-dev, libimgui-dev) was "
+                "missing when CMake ran; install them and rebuild, or use 'lab render'");
+#endif
+        }
+    } catch (const fw::Error& e) {
+        std::fprintf(stderr, "lab: error: %s\n", e.what());
+        return fw::exit_code_for(e);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "lab: internal error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,143 @@
+#include "framework/window/panel.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "framework/window/keys.hpp"
+
+namespace fw::win {
+
+namespace {
+
+// ImGui formats slider values with printf, so a '%' in a unit must be doubled.
+std::string slider_format(const char* number, const std::string& unit) {
+    std::string fmt = number;
+    if (!unit.empty()) fmt += " ";
+    for (char c : unit) fmt += (c == '%') ? std::string("%%") : std::string(1, c);
+    return fmt;
+}
+
+void tooltip(const Param& p) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    if (!p.help_text.empty()) ImGui::TextUnformatted(p.help_text.c_str());
+    std::string facts = p.name + ": " + p.range_text() + ", default " + p.default_text();
+    ImGui::TextDisabled("%s", facts.c_str());
+    ImGui::EndTooltip();
+}
+
+bool enum_combo(const char* label, const std::vector<std::string>& choices, int& index) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, choices[static_cast<size_t>(index)].c_str())) {
+        for (int i = 0; i < static_cast<int>(choices.size()); ++i) {
+            if (ImGui::Selectable(choices[static_cast<size_t>(i)].c_str(), i == index)) {
+                index = i;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+void param_widget(const Param& p, ParamValues& values) {
+    std::string label = p.name;
+    if (p.shortcut != 0) label += "  [" + std::string(1, static_cast<char>(std::toupper(p.shortcut))) + "]";
+    // AlwaysClamp: Ctrl+click lets the user type a value; keep it in range.
+    const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
+    switch (p.type) {
+        case ParamType::Float: {
+            double lo = p.min, hi = p.max;
+            ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &values.number_ref(p.name), &lo,
+                                &hi, slider_format("%.3f", p.unit_text).c_str(), clamp);
+            break;
+        }
+        case ParamType::Int: {
+            double& value = values.number_ref(p.name);
+            int i = static_cast<int>(std::lround(value));
+            if (ImGui::SliderInt(label.c_str(), &i, static_cast<int>(p.min), static_cast<int>(p.max),
+                                 slider_format("%d", p.unit_text).c_str(), clamp))
+                value = i;
+            break;
+        }
+        case ParamType::Bool: ImGui::Checkbox(label.c_str(), &values.flag_ref(p.name)); break;
+        case ParamType::Enum: enum_combo(label.c_str(), p.choices, values.choice_ref(p.name)); break;
+        case ParamType::Color:
+            ImGui::ColorEdit3(label.c_str(), glm::value_ptr(values.color_ref(p.name)));
+            break;
+    }
+    tooltip(p);
+}
+
+void shortcut_table(const LabInfo& info) {
+    if (!ImGui::CollapsingHeader("Keys", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (ImGui::BeginTable("keys", 2)) {
+        for (const Shortcut& s : shortcut_list(info)) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(s.keys.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(s.action.c_str());
+        }
+        ImGui::EndTable();
+    }
+    for (const std::string& line : info.controls) ImGui::BulletText("%s", line.c_str());
+}
+
+}  // namespace
+
+void draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string& gl_renderer) {
+    const LabInfo& info = lab.info;
+    char name[128];
+    std::snprintf(name, sizeof name, "lab %02d %s", info.number, info.id.c_str());
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::Begin(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextUnformatted(info.title.c_str());
+    ImGui::Separator();
+
+    ImGui::PushItemWidth(170);
+    for (const Param& p : info.params) param_widget(p, params);
+    ImGui::PopItemWidth();
+    if (ImGui::Button("Reset to defaults")) params = default_params(lab);
+
+    shortcut_table(info);
+    ImGui::Separator();
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::Text("%.0f fps (%.1f ms)", static_cast<double>(io.Framerate),
+                io.Framerate > 0.0f ? 1000.0 / static_cast<double>(io.Framerate) : 0.0);
+    ImGui::TextUnformatted(gl_renderer.c_str());
+    ImGui::End();
+}
+
+void draw_errors(const std::vector<std::string>& messages) {
+    if (messages.empty()) return;
+    const ImGuiViewport* view = ImGui::GetMainViewport();
+    const float margin = 8.0f;
+    float width = std::min(view->WorkSize.x - 2 * margin, 760.0f);
+    ImGui::SetNextWindowPos(ImVec2(view->WorkPos.x + view->WorkSize.x * 0.5f,
+                                   view->WorkPos.y + view->WorkSize.y - margin),
+                            ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    // Height 0: fit the text; the window scrolls if it is taller than the view.
+    ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f),
+                                        ImVec2(width, view->WorkSize.y - 2 * margin));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.45f, 0.02f, 0.02f, 0.95f));
+    ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.75f, 0.05f, 0.05f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.75f, 0.05f, 0.05f, 1.0f));
+    ImGui::Begin("Errors", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    for (size_t i = 0; i < messages.size(); ++i) {
+        if (i > 0) ImGui::Separator();
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(messages[i].c_str());
+        ImGui::PopTextWrapPos();
+    }
+    ImGui::End();
+    ImGui::PopStyleColor(3);
+}
+
+}  // namespace fw::win

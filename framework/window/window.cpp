@@ -1,0 +1,250 @@
+// `lab run`: each frame the lab draws into a framework framebuffer exactly as
+// `lab render` does, the framebuffer is copied (glBlitFramebuffer) into the
+// window, and the ImGui panel is drawn on top.
+#include "framework/window/window.hpp"
+
+#include <glad/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/context.hpp"
+#include "framework/error.hpp"
+#include "framework/gl/debug.hpp"
+#include "framework/gl/framebuffer.hpp"
+#include "framework/image.hpp"
+#include "framework/window/keys.hpp"
+#include "framework/window/panel.hpp"
+#include "framework/window/session.hpp"
+
+namespace fw {
+
+namespace {
+
+// What the GLFW callbacks (called inside glfwPollEvents) share with the loop.
+struct InputState {
+    Lab* lab = nullptr;
+    ParamValues* params = nullptr;
+    bool reload = false, screenshot = false;
+    bool dragging = false;
+    double last_x = 0.0, last_y = 0.0;
+    std::string error;  // an exception from a lab hook; C callbacks must not throw
+};
+
+InputState& input_of(GLFWwindow* window) {
+    return *static_cast<InputState*>(glfwGetWindowUserPointer(window));
+}
+
+template <class F>
+void guarded(InputState& in, F&& hook) {
+    try {
+        hook();
+        in.error.clear();
+    } catch (const std::exception& e) {
+        in.error = std::string("error in the lab's mouse handler: ") + e.what();
+    }
+}
+
+void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
+    InputState& in = input_of(window);
+    // While the user types into an ImGui field, keys belong to the field.
+    if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) return;
+    if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) return;
+    bool press = action == GLFW_PRESS;
+    if (key == GLFW_KEY_ESCAPE && press) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    else if (key == GLFW_KEY_F12 && press) in.screenshot = true;
+    else if (key == GLFW_KEY_R && press) in.reload = true;
+    else win::apply_param_key(*in.params, key, (mods & GLFW_MOD_SHIFT) != 0, !press);
+}
+
+void on_mouse_button(GLFWwindow* window, int button, int action, int /*mods*/) {
+    InputState& in = input_of(window);
+    if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+    // A drag that starts over the panel moves the slider, not the camera.
+    if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse) {
+        in.dragging = true;
+        glfwGetCursorPos(window, &in.last_x, &in.last_y);
+    } else if (action == GLFW_RELEASE) {
+        in.dragging = false;
+    }
+}
+
+void on_cursor(GLFWwindow* window, double x, double y) {
+    InputState& in = input_of(window);
+    if (!in.dragging) return;
+    // GLFW's y grows downwards; the lab gets GL's convention, up positive.
+    double dx = x - in.last_x, dy = in.last_y - y;
+    in.last_x = x;
+    in.last_y = y;
+    guarded(in, [&] { in.lab->on_drag(*in.params, dx, dy); });
+}
+
+void on_scroll(GLFWwindow* window, double /*x*/, double y) {
+    InputState& in = input_of(window);
+    if (ImGui::GetIO().WantCaptureMouse) return;
+    guarded(in, [&] { in.lab->on_scroll(*in.params, y); });
+}
+
+// The window as it looks now: the back buffer, after drawing, before the swap.
+Image read_window(int width, int height) {
+    Image img(width, height);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+    check_gl("reading the window's back buffer for a screenshot");
+    // The window is opaque whatever alpha the default framebuffer holds.
+    for (Rgba8& p : img.pixels) p.a = 255;
+    return img;
+}
+
+std::string next_screenshot_path(const std::string& lab_id) {
+    for (int n = 1;; ++n) {
+        char name[64];
+        std::snprintf(name, sizeof name, "-%03d.png", n);
+        std::string path = "screenshot-" + lab_id + name;
+        if (!std::filesystem::exists(path)) return path;
+    }
+}
+
+std::string window_title(const LabInfo& info) {
+    char number[16];
+    std::snprintf(number, sizeof number, "%02d", info.number);
+    return "lab " + std::string(number) + " " + info.id + ": " + info.title;
+}
+
+}  // namespace
+
+// The lab's frame, drawn into `fb` the way LabRenderer::render draws it
+// offscreen, then copied into the window. Returns what went wrong, if anything.
+std::vector<std::string> draw_lab(Lab& lab, const std::string& id, const ParamValues& params,
+                                  const Framebuffer& fb, double time) {
+    std::vector<std::string> problems;
+    fb.bind();  // also sets the viewport to the framebuffer's size
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    std::string rejected = lab.validate(params);
+    if (!rejected.empty()) {
+        problems.push_back("Nothing drawn: lab '" + id + "' rejects these parameters: " + rejected);
+    } else {
+        try {
+            lab.draw(params, Frame{fb.width(), fb.height(), time});
+            check_gl("draw of lab " + id);
+        } catch (const std::exception& e) {
+            problems.push_back(std::string("Drawing failed: ") + e.what());
+        }
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fb.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, fb.width(), fb.height(), 0, 0, fb.width(), fb.height(),
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return problems;
+}
+
+// Prints each problem once, when it appears, so the terminal has it too.
+void print_new(const std::vector<std::string>& problems, std::vector<std::string>& printed) {
+    for (const std::string& p : problems)
+        if (std::find(printed.begin(), printed.end(), p) == printed.end())
+            std::fprintf(stderr, "lab: %s\n", p.c_str());
+    printed = problems;
+}
+
+}  // namespace
+
+void run_window(const RegisteredLab& lab, ParamValues params, const WindowOptions& options) {
+    const std::string& id = lab.info.id;
+    win::GlfwLibrary glfw(id);
+    win::GlfwWindow window(id, window_title(lab.info), options.width, options.height);
+    ContextInfo context{"glfw", "glx", "", "", ""};
+    load_gl_and_check(glfwGetProcAddress, context);
+    enable_debug_output();
+
+    InputState input;
+    glfwSetWindowUserPointer(window.get(), &input);
+    glfwSetKeyCallback(window.get(), on_key);
+    glfwSetMouseButtonCallback(window.get(), on_mouse_button);
+    glfwSetCursorPosCallback(window.get(), on_cursor);
+    glfwSetScrollCallback(window.get(), on_scroll);
+    win::ImGuiLayer imgui(window.get());
+
+    // The lab's GL objects must die while the context lives: declared after it.
+    ProgramLibrary programs;
+    std::unique_ptr<Lab> instance = lab.create();
+    instance->init(programs);
+    check_gl("init of lab " + id);
+    input.lab = instance.get();
+    input.params = &params;
+
+    std::unique_ptr<Framebuffer> framebuffer;
+    std::vector<std::string> reload_errors;  // stay until a reload succeeds
+    std::vector<std::string> printed;
+    const auto start = std::chrono::steady_clock::now();
+    for (int frame = 1;; ++frame) {
+        glfwPollEvents();
+        const bool last = glfwWindowShouldClose(window.get()) ||
+                          (options.frames > 0 && frame >= options.frames);
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(window.get(), &width, &height);
+        if (width == 0 || height == 0) {  // minimised
+            if (last) break;
+            glfwWaitEvents();
+            continue;
+        }
+        if (input.reload) {
+            input.reload = false;
+            printed.clear();  // a failed retry prints its error again
+            reload_errors.clear();
+            for (const std::string& e : programs.reload_all())
+                reload_errors.push_back("Shader reload failed; the last good program keeps "
+                                        "drawing. Fix the file and press R.\n" + e);
+            if (reload_errors.empty()) std::printf("lab %s: shaders reloaded\n", id.c_str());
+            std::fflush(stdout);
+        }
+        if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
+            framebuffer.reset();
+            framebuffer = std::make_unique<Framebuffer>(FramebufferDesc{
+                width, height, "window " + std::to_string(width) + "x" + std::to_string(height)});
+        }
+
+        double time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::vector<std::string> problems = reload_errors;
+        for (std::string& p : draw_lab(*instance, id, params, *framebuffer, time))
+            problems.push_back(std::move(p));
+        if (!input.error.empty()) problems.push_back(input.error);
+        print_new(problems, printed);
+
+        imgui.begin_frame();
+        if (options.show_ui) win::draw_panel(lab, params, context.gl_renderer);
+        win::draw_errors(problems);
+        imgui.end_frame();
+
+        if (input.screenshot) {
+            input.screenshot = false;
+            std::string path = next_screenshot_path(id);
+            try {
+                write_png(path, read_window(width, height));
+                std::printf("%s\n", path.c_str());
+                std::fflush(stdout);
+                input.error.clear();
+            } catch (const Error& e) {
+                input.error = std::string("Screenshot failed: ") + e.what();
+            }
+        }
+        if (last && !options.screenshot.empty())
+            write_png(options.screenshot, read_window(width, height));
+        glfwSwapBuffers(window.get());
+        if (last) break;
+    }
+}
+
+}  // namespace fw

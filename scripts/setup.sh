@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the project needs (only those missing), then
+# configures and builds. Idempotent: a second run installs nothing and
+# rebuilds only what changed. Sourced by grade.sh and test.sh; also runs alone.
+#
+#   LAB_PRESET=asan scripts/setup.sh   # another CMake preset (default: default,
+#                                      # or ci when $CI is set: warnings are errors)
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+# Build tools, GL (OSMesa, EGL + Mesa's drivers), window (GLFW, ImGui, Xvfb
+# for window tests), and header libraries. SPEC.md, Dependencies.
+packages=(
+  cmake g++ make pkg-config
+  libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
+  libglfw3-dev libimgui-dev xvfb xauth
+  libglm-dev libstb-dev doctest-dev nlohmann-json3-dev libcli11-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  if [ "$(id -u)" -eq 0 ]; then
+    sudo=()
+  elif command -v sudo >/dev/null; then
+    sudo=(sudo)
+  else
+    echo "setup: these packages are missing and this user is not root and has no sudo:" >&2
+    echo "setup:   ${missing[*]}" >&2
+    echo "setup: ask an administrator to run: apt-get install ${missing[*]}" >&2
+    exit 2
+  fi
+  "${sudo[@]}" apt-get update -qq
+  # Mesa 25.1 dropped OSMesa: where the package no longer exists, build without it.
+  if ! apt-cache show libosmesa6-dev >/dev/null 2>&1; then
+    echo "setup: libosmesa6-dev is not available on this system; building without the osmesa backend"
+    missing=("${missing[@]/libosmesa6-dev/}")
+  fi
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends ${missing[*]}
+fi
+
+preset=${LAB_PRESET:-}
+if [ -z "$preset" ]; then
+  if [ -n "${CI:-}" ]; then preset=ci; else preset=default; fi
+fi
+cd "$root"
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset" -j "$(nproc)"
+echo "setup: built preset '$preset'"

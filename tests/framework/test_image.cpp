@@ -1,0 +1,252 @@
+// Image files (PNG, PFM) and the fuzzy comparison behind the `image` check.
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "framework/error.hpp"
+#include "framework/image.hpp"
+#include "tests/support/test_support.hpp"
+
+using fw::Image;
+using fw::Rgba8;
+
+namespace {
+
+const Rgba8 kBlack{0, 0, 0, 255};
+const Rgba8 kRed{255, 0, 0, 255};
+
+// A black w x h image with a filled rectangle [x0, x1) x [y0, y1).
+Image rect_image(int w, int h, int x0, int y0, int x1, int y1, Rgba8 colour = kRed) {
+    Image img(w, h, kBlack);
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) img.at(x, y) = colour;
+    return img;
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The message of the fw::Error that `f` throws, or "" when it throws none.
+template <class F>
+std::string error_of(F f) {
+    try {
+        f();
+    } catch (const fw::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("PNG round trip is pixel exact and stores the bottom row last") {
+    Image img(3, 2);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x)
+            img.at(x, y) = {std::uint8_t(40 * x), std::uint8_t(100 * y), 7, std::uint8_t(200 + x)};
+    img.at(1, 0) = {11, 22, 33, 44};  // bottom row in GL terms
+    std::string path = fw::test::out_dir() + "/round_trip.png";
+    fw::write_png(path, img);
+
+    Image back = fw::read_png(path);
+    REQUIRE(back.width == 3);
+    REQUIRE(back.height == 2);
+    CHECK(back.pixels == img.pixels);
+
+    // Decoded independently: PNG row H-1 (the last one) holds GL row 0.
+    int w = 0, h = 0, n = 0;
+    unsigned char* raw = stbi_load(path.c_str(), &w, &h, &n, 4);
+    REQUIRE(raw != nullptr);
+    const unsigned char* p = raw + ((h - 1) * w + 1) * 4;
+    CHECK(p[0] == 11);
+    CHECK(p[1] == 22);
+    CHECK(p[2] == 33);
+    CHECK(p[3] == 44);
+    stbi_image_free(raw);
+}
+
+TEST_CASE("read_png converts grey and RGB files to RGBA") {
+    // Written with stb directly, top row first: 1 and 3 channels per pixel.
+    const unsigned char grey[] = {10, 20, 30, 40};      // 2 x 2
+    const unsigned char rgb[] = {1, 2, 3, 4, 5, 6};      // 2 x 1
+    std::string grey_path = fw::test::out_dir() + "/grey.png";
+    std::string rgb_path = fw::test::out_dir() + "/rgb.png";
+    REQUIRE(stbi_write_png(grey_path.c_str(), 2, 2, 1, grey, 2));
+    REQUIRE(stbi_write_png(rgb_path.c_str(), 2, 1, 3, rgb, 6));
+
+    Image g = fw::read_png(grey_path);
+    REQUIRE(g.width == 2);
+    CHECK(g.at(0, 1) == Rgba8{10, 10, 10, 255});  // the file's top row is GL row 1
+    CHECK(g.at(1, 0) == Rgba8{40, 40, 40, 255});
+    Image c = fw::read_png(rgb_path);
+    CHECK(c.at(1, 0) == Rgba8{4, 5, 6, 255});
+}
+
+TEST_CASE("PNG errors name the path") {
+    std::string missing = fw::test::out_dir() + "/no_such.png";
+    std::string msg = error_of([&] { fw::read_png(missing); });
+    CHECK(msg.find(missing) != std::string::npos);
+    CHECK(msg.find("not found") != std::string::npos);
+
+    std::string bogus = fw::test::out_dir() + "/bogus.png";
+    write_bytes(bogus, "this is not a png");
+    CHECK(error_of([&] { fw::read_png(bogus); }).find(bogus) != std::string::npos);
+
+    std::string nodir = fw::test::out_dir() + "/no_dir/x.png";
+    msg = error_of([&] { fw::write_png(nodir, Image(1, 1)); });
+    CHECK(msg.find(nodir) != std::string::npos);
+    CHECK(msg.find("directory") != std::string::npos);
+}
+
+TEST_CASE("Image rejects negative sizes") {
+    CHECK_THROWS_AS(Image(-1, 4), fw::UsageError);
+    CHECK_THROWS_AS(fw::DepthImage(4, -1), fw::UsageError);
+}
+
+TEST_CASE("PFM round trip is exact and the header matches SPEC.md") {
+    fw::DepthImage d(3, 2);
+    const float values[] = {0.0f, 1.0f, 0.5f, 1e-7f, 0.999999f, -3.25f};
+    std::memcpy(d.values.data(), values, sizeof values);
+    std::string path = fw::test::out_dir() + "/depth.pfm";
+    fw::write_pfm(path, d);
+
+    std::string bytes = read_bytes(path);
+    const std::string header = "Pf\n3 2\n-1.0\n";
+    CHECK(bytes.substr(0, header.size()) == header);
+    CHECK(bytes.size() == header.size() + 6 * 4);
+    // Little endian, bottom row first: the first float is value (0, 0).
+    float first = 0;
+    std::memcpy(&first, bytes.data() + header.size(), 4);
+    CHECK(first == 0.0f);
+
+    fw::DepthImage back = fw::read_pfm(path);
+    REQUIRE(back.width == 3);
+    REQUIRE(back.height == 2);
+    CHECK(std::memcmp(back.values.data(), values, sizeof values) == 0);
+}
+
+TEST_CASE("read_pfm reads big-endian files (positive scale)") {
+    // 0.5f is 0x3F000000; 2.0f is 0x40000000; big endian = most significant byte first.
+    std::string bytes = std::string("Pf\n2 1\n1.0\n") + std::string("\x3F\0\0\0", 4) +
+                        std::string("\x40\0\0\0", 4);
+    std::string path = fw::test::out_dir() + "/big.pfm";
+    write_bytes(path, bytes);
+    fw::DepthImage d = fw::read_pfm(path);
+    REQUIRE(d.width == 2);
+    CHECK(d.at(0, 0) == 0.5f);
+    CHECK(d.at(1, 0) == 2.0f);
+}
+
+TEST_CASE("PFM errors name the path and the reason") {
+    std::string dir = fw::test::out_dir();
+    std::string missing = dir + "/no_such.pfm";
+    std::string msg = error_of([&] { fw::read_pfm(missing); });
+    CHECK(msg.find(missing) != std::string::npos);
+
+    std::string truncated = dir + "/truncated.pfm";
+    write_bytes(truncated, "Pf\n4 4\n-1.0\n" + std::string(20, '\0'));
+    msg = error_of([&] { fw::read_pfm(truncated); });
+    CHECK(msg.find(truncated) != std::string::npos);
+    CHECK(msg.find("truncated") != std::string::npos);
+
+    std::string colour = dir + "/colour.pfm";
+    write_bytes(colour, "PF\n1 1\n-1.0\n" + std::string(12, '\0'));
+    msg = error_of([&] { fw::read_pfm(colour); });
+    CHECK(msg.find(colour) != std::string::npos);
+    CHECK(msg.find("colour") != std::string::npos);
+}
+
+TEST_CASE("compare: identical images pass with no failed pixels") {
+    Image a = rect_image(64, 48, 10, 10, 30, 40);
+    fw::CompareResult r = fw::compare_images(a, a);
+    MESSAGE(r.summary());
+    CHECK(r.passed);
+    CHECK(r.failed_pixels == 0);
+    CHECK(r.total_pixels == 64 * 48);
+    CHECK(r.max_channel_error == 0);
+    CHECK(r.difference.width == 64);
+}
+
+TEST_CASE("compare: a one-pixel edge shift passes, a 10-pixel move fails") {
+    Image expected = rect_image(64, 64, 20, 20, 40, 40);
+    fw::CompareResult shifted = fw::compare_images(rect_image(64, 64, 21, 19, 41, 39), expected);
+    MESSAGE(shifted.summary());
+    CHECK(shifted.passed);
+    CHECK(shifted.failed_pixels == 0);
+
+    fw::CompareResult moved = fw::compare_images(rect_image(64, 64, 30, 20, 50, 40), expected);
+    MESSAGE(moved.summary());
+    CHECK_FALSE(moved.passed);
+    // Red over black reference at x 41..49 (x 40 sees the reference edge at 39): 9 x 20.
+    // Black over red reference at x 21..29, except rows 20 and 39, which see black
+    // reference rows 19 and 40 in their 3x3 neighbourhood: 9 x 18.
+    CHECK(moved.failed_pixels == 9 * 20 + 9 * 18);
+    CHECK(moved.difference.at(45, 30) != Rgba8{0, 0, 0, 255});
+    CHECK(moved.difference.at(5, 5) == Rgba8{0, 0, 0, 255});
+}
+
+TEST_CASE("compare: a recoloured object fails") {
+    Image expected = rect_image(64, 64, 20, 20, 40, 40);
+    Image actual = rect_image(64, 64, 20, 20, 40, 40, {200, 0, 0, 255});
+    fw::CompareResult r = fw::compare_images(actual, expected);
+    MESSAGE(r.summary());
+    CHECK_FALSE(r.passed);
+    CHECK(r.max_channel_error == 55);
+}
+
+TEST_CASE("compare: 8/255 on any channel passes, 9/255 fails") {
+    Image expected(16, 16, {100, 100, 100, 100});
+    for (int channel = 0; channel < 4; ++channel)
+        for (int delta : {8, -8, 9, -9}) {
+            Image actual = expected;
+            for (Rgba8& p : actual.pixels) {
+                std::uint8_t* c[] = {&p.r, &p.g, &p.b, &p.a};
+                *c[channel] = std::uint8_t(100 + delta);
+            }
+            fw::CompareResult r = fw::compare_images(actual, expected);
+            INFO("channel " << channel << " delta " << delta << ": " << r.summary());
+            CHECK(r.passed == (std::abs(delta) <= 8));
+            CHECK(r.max_channel_error == std::abs(delta));
+        }
+}
+
+TEST_CASE("compare: a size mismatch fails and says both sizes") {
+    fw::CompareResult r = fw::compare_images(Image(32, 16), Image(16, 32));
+    MESSAGE(r.summary());
+    CHECK_FALSE(r.passed);
+    CHECK(r.size_mismatch);
+    CHECK(r.summary().find("32x16") != std::string::npos);
+    CHECK(r.summary().find("16x32") != std::string::npos);
+}
+
+TEST_CASE("compare: max_failed_fraction is an inclusive limit") {
+    // 100 x 100 pixels at the default 0.1% limit: 10 isolated bad pixels pass, 11 fail.
+    Image expected(100, 100, kBlack);
+    Image actual = expected;
+    for (int i = 0; i < 10; ++i) actual.at(5 + 9 * i, 50) = kRed;
+    fw::CompareResult at_limit = fw::compare_images(actual, expected);
+    MESSAGE(at_limit.summary());
+    CHECK(at_limit.failed_pixels == 10);
+    CHECK(at_limit.passed);
+
+    actual.at(50, 90) = kRed;
+    fw::CompareResult over = fw::compare_images(actual, expected);
+    MESSAGE(over.summary());
+    CHECK(over.failed_pixels == 11);
+    CHECK_FALSE(over.passed);
+    CHECK(over.summary().find("limit 0.1%") != std::string::npos);
+
+    fw::CompareOptions loose;
+    loose.max_failed_fraction = 0.0011;
+    CHECK(fw::compare_images(actual, expected, loose).passed);
+}

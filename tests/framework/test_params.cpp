@@ -1,0 +1,141 @@
+// Parameter declarations and values, without a GL context: parsing, ranges,
+// error messages, JSON, and checkpoint files.
+#include <filesystem>
+#include <fstream>
+
+#include "framework/checkpoints.hpp"
+#include "framework/error.hpp"
+#include "framework/params.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace {
+
+const std::vector<fw::Param>& sample_params() {
+    static const std::vector<fw::Param> params = {
+        fw::Param::number("fov", 60).range(10, 150).unit("deg").help("field of view").key('F'),
+        fw::Param::integer("subdiv", 2).range(0, 5),
+        fw::Param::boolean("wireframe", true),
+        fw::Param::choice("scene", {"cards", "zfight"}, "cards"),
+        fw::Param::color("tint", "ff8000"),
+    };
+    return params;
+}
+
+template <class F>
+std::string error_of(F&& f) {
+    try {
+        f();
+    } catch (const fw::UsageError& e) {
+        return e.what();
+    }
+    return "(no UsageError thrown)";
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("defaults come from the declaration") {
+    fw::ParamValues v("demo", &sample_params());
+    CHECK(v.number("fov") == 60.0f);
+    CHECK(v.integer("subdiv") == 2);
+    CHECK(v.flag("wireframe"));
+    CHECK(v.choice("scene") == "cards");
+    CHECK(v.color("tint").r == doctest::Approx(1.0));
+    CHECK(v.color("tint").g == doctest::Approx(128.0 / 255.0));
+    CHECK(v.text("tint") == "ff8000");
+}
+
+TEST_CASE("set parses every type") {
+    fw::ParamValues v("demo", &sample_params());
+    v.set_assignment("fov=45.5");
+    v.set("subdiv", "5");
+    v.set("wireframe", "off");
+    v.set("scene", "zfight");
+    v.set("tint", "#00ff00");
+    CHECK(v.number("fov") == 45.5f);
+    CHECK(v.integer("subdiv") == 5);
+    CHECK_FALSE(v.flag("wireframe"));
+    CHECK(v.choice_index("scene") == 1);
+    CHECK(v.color("tint") == glm::vec3(0, 1, 0));
+    auto j = v.to_json();
+    CHECK(j["fov"] == 45.5);
+    CHECK(j["subdiv"] == 5);
+    CHECK(j["wireframe"] == false);
+    CHECK(j["scene"] == "zfight");
+    CHECK(j["tint"] == "00ff00");
+}
+
+TEST_CASE("bad values name the lab, the parameter and what is valid") {
+    fw::ParamValues v("demo", &sample_params());
+    std::string e = error_of([&] { v.set("fov", "200"); });
+    CHECK(contains(e, "lab 'demo', parameter 'fov'"));
+    CHECK(contains(e, "out of range"));
+    CHECK(contains(e, "[10, 150] deg"));
+    CHECK(contains(error_of([&] { v.set("fov", "wide"); }), "'wide' is not a number"));
+    CHECK(contains(error_of([&] { v.set("fov", "nan"); }), "is not a number"));
+    CHECK(contains(error_of([&] { v.set("subdiv", "2.5"); }), "not an integer"));
+    CHECK(contains(error_of([&] { v.set("scene", "teapot"); }), "valid values: cards, zfight"));
+    CHECK(contains(error_of([&] { v.set("tint", "orange"); }), "hex rrggbb"));
+    CHECK(contains(error_of([&] { v.set("nope", "1"); }), "its parameters are: fov, subdiv, wireframe, scene, tint"));
+    CHECK(contains(error_of([&] { v.set_assignment("fov"); }), "name=value"));
+    // A failed set leaves the previous value.
+    CHECK(v.number("fov") == 60.0f);
+}
+
+TEST_CASE("reading a parameter as the wrong type is a programming error") {
+    fw::ParamValues v("demo", &sample_params());
+    CHECK_THROWS_AS(v.flag("fov"), fw::Error);
+    CHECK_THROWS_AS(v.choice("wireframe"), fw::Error);
+    CHECK(v.number("subdiv") == 2.0f);  // an int reads as a number
+}
+
+TEST_CASE("a declaration whose default is outside its range or choices is refused") {
+    CHECK_THROWS_AS(fw::Param::number("x", 5).range(0, 1), fw::Error);
+    CHECK_THROWS_AS(fw::Param::choice("x", {"a", "b"}, "c"), fw::Error);
+    CHECK_THROWS_AS(fw::Param::color("x", "12345"), fw::Error);
+}
+
+TEST_CASE("keyboard steps") {
+    CHECK(sample_params()[0].key_step() == doctest::Approx(7.0));  // (150 - 10) / 20
+    CHECK(sample_params()[1].key_step() == 1.0);
+}
+
+TEST_CASE("checkpoint files are validated against the declaration") {
+    fw::RegisteredLab lab{{0, "demo", "99_demo", "Demo", sample_params(), {}}, nullptr};
+    std::string dir = fw::test::out_dir();
+    auto write = [&](const std::string& text) {
+        std::ofstream(dir + "/cp.json") << text;
+        return dir + "/cp.json";
+    };
+    auto good = fw::load_checkpoints(lab, write(R"({
+        // comments are allowed
+        "checkpoints": [
+          {"name": "a", "params": {"fov": 30, "scene": "zfight", "wireframe": false}},
+          {"name": "b", "visibility": "hidden", "checks": [{"kind": "image"}]}
+        ]})"));
+    REQUIRE(good.size() == 2);
+    CHECK(good[1].visibility == "hidden");
+    fw::ParamValues a = fw::checkpoint_params(lab, good[0]);
+    CHECK(a.number("fov") == 30.0f);
+    CHECK(a.choice("scene") == "zfight");
+    CHECK(a.integer("subdiv") == 2);
+
+    auto error_for = [&](const std::string& text) {
+        try {
+            fw::load_checkpoints(lab, write(text));
+        } catch (const fw::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a", "params": {"fov": 1}}]})"), "checkpoint 'a'"));
+    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a", "params": {"zoom": 1}}]})"), "no parameter 'zoom'"));
+    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a"}, {"name": "a"}]})"), "used twice"));
+    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a", "visibility": "secret"}]})"), "visibility"));
+    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a", "param": {}}]})"), "unknown field \"param\""));
+    CHECK(contains(error_for(R"({"checkpoints": [)"), dir + "/cp.json"));
+    CHECK(contains(error_for(R"({"checkpoints": [)"), "not valid JSON"));
+    CHECK_THROWS_WITH_AS(fw::load_checkpoints(lab, dir + "/missing.json"),
+                         doctest::Contains("missing.json"), fw::Error);
+}

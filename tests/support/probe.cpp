@@ -1,0 +1,74 @@
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "test_support.hpp"
+
+namespace fw::test {
+
+std::string bin_dir() { return LAB_BIN_DIR; }
+std::string source_dir() { return LAB_SOURCE_DIR; }
+
+std::string out_dir() {
+    const doctest::detail::TestCase* tc = doctest::getContextOptions()->currentTest;
+    std::string name = tc ? tc->m_name : "unnamed";
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    std::filesystem::path dir = std::filesystem::path(LAB_TEST_OUT_DIR) / name;
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+bool probe_rgb(const Image& img, int x, int y, glm::vec3 expected, float tol) {
+    if (x < 0 || y < 0 || x >= img.width || y >= img.height) {
+        MESSAGE("probe (" << x << ", " << y << ") is outside the " << img.width << "x"
+                          << img.height << " image");
+        return false;
+    }
+    Rgba8 p = img.at(x, y);
+    glm::vec3 observed(p.r / 255.0f, p.g / 255.0f, p.b / 255.0f);
+    glm::vec3 diff = glm::abs(observed - expected);
+    bool pass = diff.r <= tol && diff.g <= tol && diff.b <= tol;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "probe (%d, %d): expected (%.4f, %.4f, %.4f) observed (%.4f, %.4f, %.4f) "
+                  "tolerance %.4f: %s",
+                  x, y, expected.r, expected.g, expected.b, observed.r, observed.g, observed.b, tol,
+                  pass ? "pass" : "FAIL");
+    MESSAGE(line);
+    return pass;
+}
+
+bool probe_depth(const DepthImage& img, int x, int y, float expected, float tol) {
+    if (x < 0 || y < 0 || x >= img.width || y >= img.height) {
+        MESSAGE("depth probe (" << x << ", " << y << ") is outside the image");
+        return false;
+    }
+    float observed = img.at(x, y);
+    bool pass = std::fabs(observed - expected) <= tol;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "depth probe (%d, %d): expected %.7f observed %.7f tolerance %.1e: %s", x, y,
+                  expected, observed, tol, pass ? "pass" : "FAIL");
+    MESSAGE(line);
+    return pass;
+}
+
+CommandResult run_command(const std::string& command) {
+    CommandResult r;
+    std::string full = command + " 2>&1";
+    FILE* p = popen(full.c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+    int status = pclose(p);
+    if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+    return r;
+}
+
+}  // namespace fw::test

@@ -1,0 +1,39 @@
+// Shared by every test: the GL context a GL test runs in, and piglit-style
+// probes that print Expected/Observed for every probe, passing or not.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <glm/glm.hpp>
+#include <string>
+
+#include "framework/context.hpp"
+#include "framework/image.hpp"
+
+namespace fw::test {
+
+// The context of a GL test (LAB_BACKEND selects it; tests/CMakeLists.txt runs
+// each GL test once per backend). Only valid in tests built with lab_gl_test.
+const ContextInfo& context_info();
+
+// Directory for files a test writes (build/test-out/<test name>/), created.
+std::string out_dir();
+// The build's bin directory (where `lab` lives) and the source tree.
+std::string bin_dir();
+std::string source_dir();
+
+// Colour probe: pixel (x, y) in GL window coordinates (origin bottom-left)
+// within `tol` (0..1, per channel, RGB only) of `expected`. Logs
+// "probe (x, y): expected (r, g, b) observed (r, g, b)" and returns pass.
+bool probe_rgb(const Image& img, int x, int y, glm::vec3 expected, float tol = 1.0f / 255.0f);
+// Depth probe, window-space depth in [0, 1].
+bool probe_depth(const DepthImage& img, int x, int y, float expected, float tol = 1e-5f);
+
+// Runs a command through /bin/sh, capturing stdout and stderr together.
+struct CommandResult {
+    int exit_code = -1;  // -1: did not exit normally
+    std::string output;
+};
+CommandResult run_command(const std::string& command);
+
+}  // namespace fw::test
