@@ -1,10 +1,11 @@
 #include "framework/lab.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <set>
 
 #include "framework/error.hpp"
-#include "framework/gl/shader.hpp"
+#include "framework/gl/program.hpp"
 
 namespace fw {
 
@@ -60,6 +61,16 @@ ParamValues default_params(const RegisteredLab& lab) {
     for (const Param& p : lab.info.params)
         if (!seen.insert(p.name).second)
             throw Error("lab '" + lab.info.id + "' declares parameter '" + p.name + "' twice");
+    std::set<int> keys;
+    for (const Param& p : lab.info.params) {
+        if (p.shortcut == 'R' || p.shortcut == 'r')
+            throw Error("lab '" + lab.info.id + "', parameter '" + p.name +
+                        "': key R is reserved for reloading shaders; choose another key");
+        if (p.shortcut && !keys.insert(std::toupper(p.shortcut)).second)
+            throw Error("lab '" + lab.info.id + "', parameter '" + p.name + "': key '" +
+                        std::string(1, static_cast<char>(p.shortcut)) +
+                        "' is already used by another parameter");
+    }
     return ParamValues(lab.info.id, &lab.info.params);
 }
 

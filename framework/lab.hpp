@@ -73,8 +73,9 @@ public:
     // Checks that involve several parameters (e.g. far > near); returns an
     // error message naming them, or empty when the values are consistent.
     virtual std::string validate(const ParamValues&) const { return {}; }
-    // Window only: mouse drag in pixels and scroll steps, for controls such as
-    // an orbit camera. May change parameters; return true if it did.
+    // Window only: mouse drag in pixels (dy > 0 when the mouse moves up, as
+    // GL's y) and scroll steps, for controls such as an orbit camera. May
+    // change parameters; return true if it did.
     virtual bool on_drag(ParamValues&, double /*dx*/, double /*dy*/) { return false; }
     virtual bool on_scroll(ParamValues&, double /*steps*/) { return false; }
 };

@@ -45,8 +45,8 @@ Framebuffer::Framebuffer(const FramebufferDesc& desc)
     : width_(desc.width), height_(desc.height), label_(desc.label) {
     if (label_.empty())
         label_ = "framebuffer " + std::to_string(desc.width) + "x" + std::to_string(desc.height);
-    check_size("width", desc.width, size_limit(GL_MAX_FRAMEBUFFER_WIDTH, "GL_MAX_FRAMEBUFFER_WIDTH"),
-               label_);
+    check_size("width", desc.width,
+               size_limit(GL_MAX_FRAMEBUFFER_WIDTH, "GL_MAX_FRAMEBUFFER_WIDTH"), label_);
     check_size("height", desc.height,
                size_limit(GL_MAX_FRAMEBUFFER_HEIGHT, "GL_MAX_FRAMEBUFFER_HEIGHT"), label_);
 
@@ -59,7 +59,8 @@ Framebuffer::Framebuffer(const FramebufferDesc& desc)
     GLint previous = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, id);
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(),
+                           0);
     glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
     const GLenum status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previous));

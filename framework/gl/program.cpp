@@ -77,7 +77,8 @@ Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
     p.label_ = label.empty() ? joined_names(p.files_) : std::move(label);
 
     GLuint id = glCreateProgram();
-    if (id == 0) throw Error("glCreateProgram failed for " + p.label_ + " (is a GL context current?)");
+    if (id == 0)
+        throw Error("glCreateProgram failed for " + p.label_ + " (is a GL context current?)");
     p.handle_ = detail::Handle(id, [](GLuint n) { glDeleteProgram(n); });
     for (const Shader& s : shaders) glAttachShader(id, s.id());
     glLinkProgram(id);
@@ -92,8 +93,8 @@ Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
         std::string log(static_cast<std::size_t>(log_length > 0 ? log_length : 0), '\0');
         if (log_length > 0) glGetProgramInfoLog(id, log_length, nullptr, log.data());
         while (!log.empty() && log.back() == '\0') log.pop_back();
-        throw Error("program '" + p.label_ + "' failed to link (files: " + p.files_text() +
-                    "):\n" + indented(log));
+        throw Error("program '" + p.label_ + "' failed to link (files: " + p.files_text() + "):\n" +
+                    indented(log));
     }
     set_object_label(GL_PROGRAM, id, p.label_);
     p.load_uniforms();
@@ -102,9 +103,11 @@ Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
 
 void Program::use() const { glUseProgram(id()); }
 
+// The files as paths from the source tree ("shaders/00_pipeline/basic.vert"),
+// which a student can open from the repository root.
 std::string Program::files_text() const {
     std::string out;
-    for (const std::string& f : files_) out += (out.empty() ? "" : ", ") + f;
+    for (const auto& source : sources_) out += (out.empty() ? "" : ", ") + source.first;
     return out;
 }
 
@@ -184,8 +187,9 @@ void Program::throw_unknown(const std::string& name) const {
                 ", so it was probably optimised out: the compiler removes uniforms that do not "
                 "affect the output; use it, or do not set it";
     else
-        text += " (misspelt? a uniform that does not affect the output may also have been "
-                "optimised out)";
+        text +=
+            " (misspelt? a uniform that does not affect the output may also have been "
+            "optimised out)";
     text += ". Files: " + files_text() + ". Active uniforms: " + describe_uniforms();
     throw Error(text);
 }

@@ -13,12 +13,11 @@
 
 #include <glad/gl.h>
 
+#include <glm/glm.hpp>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "framework/gl/handle.hpp"
 #include "framework/gl/shader.hpp"
@@ -27,12 +26,12 @@ namespace fw {
 
 // One active uniform of the default block.
 struct UniformInfo {
-    std::string name;     // as GL reports it: "u_color", "u_lights[0]", "u_mat.kd"
+    std::string name;  // as GL reports it: "u_color", "u_lights[0]", "u_mat.kd"
     GLint location = -1;
-    GLenum type = 0;      // GL_FLOAT_VEC3, GL_SAMPLER_2D, ...
+    GLenum type = 0;  // GL_FLOAT_VEC3, GL_SAMPLER_2D, ...
     bool is_array = false;
-    GLint array_size = 1;    // elements in the whole array (1 if not an array)
-    GLint first_element = 0; // for "u_w[2]": 2; set() may write array_size - first_element
+    GLint array_size = 1;     // elements in the whole array (1 if not an array)
+    GLint first_element = 0;  // for "u_w[2]": 2; set() may write array_size - first_element
 };
 
 // "vec3", "mat4", "sampler2D"... for a uniform type; "0x8B52" if unknown.

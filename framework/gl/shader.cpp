@@ -37,7 +37,8 @@ const StageInfo& info(Stage stage) {
 }
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return s.size() >= suffix.size() &&
+           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 std::vector<std::string> split_lines(const std::string& text) {
@@ -100,15 +101,17 @@ std::string format_compile_error(const std::string& path, Stage stage, const std
                                  const std::string& source) {
     const std::vector<std::string> source_lines = split_lines(source);
     std::string body;
-    int first_line = 0;
+    int first_line = 0, last_quoted = 0;
     for (const std::string& line : split_lines(log)) {
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
         body += "  " + line + "\n";
         int n = log_line_number(line);
-        if (n >= 1 && static_cast<std::size_t>(n) <= source_lines.size()) {
+        // Compilers often report several errors for one line; quote it once.
+        if (n >= 1 && static_cast<std::size_t>(n) <= source_lines.size() && n != last_quoted) {
             if (first_line == 0) first_line = n;
-            body += "  " + std::to_string(n) + " | " + source_lines[static_cast<std::size_t>(n) - 1] +
-                    "\n";
+            last_quoted = n;
+            body += "  " + std::to_string(n) + " | " +
+                    source_lines[static_cast<std::size_t>(n) - 1] + "\n";
         }
     }
     if (body.empty()) body = "  (the compiler gave no log)\n";
@@ -125,8 +128,8 @@ Shader Shader::from_file(const std::string& path) {
     if (!std::filesystem::is_regular_file(resolved) || !in || in.bad())
         throw Error("cannot read shader file '" + resolved + "'" +
                     (resolved == path ? std::string()
-                                      : " ('" + path + "' in the shader directory " +
-                                            shader_dir() + "; LAB_SHADER_DIR overrides it)"));
+                                      : " ('" + path + "' in the shader directory " + shader_dir() +
+                                            "; LAB_SHADER_DIR overrides it)"));
     Shader shader = from_source(stage, text.str(), display_path(resolved));
     shader.path_ = resolved;
     return shader;

@@ -40,7 +40,9 @@ void upload(GLuint id, int width, int height, const void* data, GLenum format, G
 }  // namespace
 
 Texture2D::Texture2D(const Texture2DDesc& desc)
-    : width_(desc.width), height_(desc.height), internal_format_(desc.internal_format),
+    : width_(desc.width),
+      height_(desc.height),
+      internal_format_(desc.internal_format),
       label_(desc.label) {
     const std::string where = " (texture '" + label_ + "')";
     GLint max_size = 0;
@@ -74,7 +76,8 @@ Texture2D::Texture2D(const Texture2DDesc& desc)
     if (immutable != GL_TRUE)
         throw UsageError("Texture2DDesc.internal_format " + gl_enum_name(desc.internal_format) +
                          " was rejected by glTexStorage2D; use a sized format such as GL_RGBA8, "
-                         "GL_R32F or GL_DEPTH_COMPONENT32F" + where);
+                         "GL_R32F or GL_DEPTH_COMPONENT32F" +
+                         where);
     set_object_label(GL_TEXTURE, id, label_);
     if (desc.data) update(desc.data, desc.data_format, desc.data_type);
 }

@@ -18,14 +18,14 @@
 namespace fw {
 
 struct Texture2DDesc {
-    int width = 0, height = 0;             // required, 1 .. GL_MAX_TEXTURE_SIZE
-    GLenum internal_format = GL_RGBA8;     // how GL stores it: GL_RGBA8, GL_R32F, GL_DEPTH_COMPONENT32F...
-    const void* data = nullptr;            // nullptr: contents undefined (render targets)
-    GLenum data_format = GL_RGBA;          // layout of `data`: GL_RGBA, GL_RGB, GL_RED, ...
-    GLenum data_type = GL_UNSIGNED_BYTE;   // type of each value in `data`
-    GLenum min_filter = GL_LINEAR;         // a *_MIPMAP_* filter also allocates and builds mipmaps
+    int width = 0, height = 0;            // required, 1 .. GL_MAX_TEXTURE_SIZE
+    GLenum internal_format = GL_RGBA8;    // how GL stores it (sized: GL_RGBA8, GL_R32F, ...)
+    const void* data = nullptr;           // nullptr: contents undefined (render targets)
+    GLenum data_format = GL_RGBA;         // layout of `data`: GL_RGBA, GL_RGB, GL_RED, ...
+    GLenum data_type = GL_UNSIGNED_BYTE;  // type of each value in `data`
+    GLenum min_filter = GL_LINEAR;        // a *_MIPMAP_* filter also builds mipmaps
     GLenum mag_filter = GL_LINEAR;
-    GLenum wrap = GL_CLAMP_TO_EDGE;        // for both s and t
+    GLenum wrap = GL_CLAMP_TO_EDGE;  // for both s and t
     std::string label;
 };
 

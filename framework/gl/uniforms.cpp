@@ -1,6 +1,5 @@
 // Program::set: the checked uniform setters (see program.hpp).
 #include <cstdio>
-
 #include <glm/gtc/type_ptr.hpp>
 
 #include "framework/error.hpp"
@@ -17,30 +16,61 @@ struct TypeName {
 
 // Opaque types (samplers, images) are set with an int: the unit they read.
 constexpr TypeName kBasicTypes[] = {
-    {GL_FLOAT, "float"}, {GL_FLOAT_VEC2, "vec2"}, {GL_FLOAT_VEC3, "vec3"},
-    {GL_FLOAT_VEC4, "vec4"}, {GL_DOUBLE, "double"}, {GL_DOUBLE_VEC2, "dvec2"},
-    {GL_DOUBLE_VEC3, "dvec3"}, {GL_DOUBLE_VEC4, "dvec4"}, {GL_INT, "int"},
-    {GL_INT_VEC2, "ivec2"}, {GL_INT_VEC3, "ivec3"}, {GL_INT_VEC4, "ivec4"},
-    {GL_UNSIGNED_INT, "uint"}, {GL_UNSIGNED_INT_VEC2, "uvec2"}, {GL_UNSIGNED_INT_VEC3, "uvec3"},
-    {GL_UNSIGNED_INT_VEC4, "uvec4"}, {GL_BOOL, "bool"}, {GL_BOOL_VEC2, "bvec2"},
-    {GL_BOOL_VEC3, "bvec3"}, {GL_BOOL_VEC4, "bvec4"}, {GL_FLOAT_MAT2, "mat2"},
-    {GL_FLOAT_MAT3, "mat3"}, {GL_FLOAT_MAT4, "mat4"}, {GL_FLOAT_MAT2x3, "mat2x3"},
-    {GL_FLOAT_MAT2x4, "mat2x4"}, {GL_FLOAT_MAT3x2, "mat3x2"}, {GL_FLOAT_MAT3x4, "mat3x4"},
-    {GL_FLOAT_MAT4x2, "mat4x2"}, {GL_FLOAT_MAT4x3, "mat4x3"}, {GL_DOUBLE_MAT4, "dmat4"},
+    {GL_FLOAT, "float"},
+    {GL_FLOAT_VEC2, "vec2"},
+    {GL_FLOAT_VEC3, "vec3"},
+    {GL_FLOAT_VEC4, "vec4"},
+    {GL_DOUBLE, "double"},
+    {GL_DOUBLE_VEC2, "dvec2"},
+    {GL_DOUBLE_VEC3, "dvec3"},
+    {GL_DOUBLE_VEC4, "dvec4"},
+    {GL_INT, "int"},
+    {GL_INT_VEC2, "ivec2"},
+    {GL_INT_VEC3, "ivec3"},
+    {GL_INT_VEC4, "ivec4"},
+    {GL_UNSIGNED_INT, "uint"},
+    {GL_UNSIGNED_INT_VEC2, "uvec2"},
+    {GL_UNSIGNED_INT_VEC3, "uvec3"},
+    {GL_UNSIGNED_INT_VEC4, "uvec4"},
+    {GL_BOOL, "bool"},
+    {GL_BOOL_VEC2, "bvec2"},
+    {GL_BOOL_VEC3, "bvec3"},
+    {GL_BOOL_VEC4, "bvec4"},
+    {GL_FLOAT_MAT2, "mat2"},
+    {GL_FLOAT_MAT3, "mat3"},
+    {GL_FLOAT_MAT4, "mat4"},
+    {GL_FLOAT_MAT2x3, "mat2x3"},
+    {GL_FLOAT_MAT2x4, "mat2x4"},
+    {GL_FLOAT_MAT3x2, "mat3x2"},
+    {GL_FLOAT_MAT3x4, "mat3x4"},
+    {GL_FLOAT_MAT4x2, "mat4x2"},
+    {GL_FLOAT_MAT4x3, "mat4x3"},
+    {GL_DOUBLE_MAT4, "dmat4"},
 };
 
 constexpr TypeName kOpaqueTypes[] = {
-    {GL_SAMPLER_1D, "sampler1D"}, {GL_SAMPLER_2D, "sampler2D"}, {GL_SAMPLER_3D, "sampler3D"},
-    {GL_SAMPLER_CUBE, "samplerCube"}, {GL_SAMPLER_2D_SHADOW, "sampler2DShadow"},
-    {GL_SAMPLER_CUBE_SHADOW, "samplerCubeShadow"}, {GL_SAMPLER_2D_ARRAY, "sampler2DArray"},
+    {GL_SAMPLER_1D, "sampler1D"},
+    {GL_SAMPLER_2D, "sampler2D"},
+    {GL_SAMPLER_3D, "sampler3D"},
+    {GL_SAMPLER_CUBE, "samplerCube"},
+    {GL_SAMPLER_2D_SHADOW, "sampler2DShadow"},
+    {GL_SAMPLER_CUBE_SHADOW, "samplerCubeShadow"},
+    {GL_SAMPLER_2D_ARRAY, "sampler2DArray"},
     {GL_SAMPLER_2D_ARRAY_SHADOW, "sampler2DArrayShadow"},
-    {GL_SAMPLER_2D_MULTISAMPLE, "sampler2DMS"}, {GL_SAMPLER_BUFFER, "samplerBuffer"},
-    {GL_SAMPLER_2D_RECT, "sampler2DRect"}, {GL_INT_SAMPLER_2D, "isampler2D"},
-    {GL_UNSIGNED_INT_SAMPLER_2D, "usampler2D"}, {GL_INT_SAMPLER_3D, "isampler3D"},
-    {GL_UNSIGNED_INT_SAMPLER_3D, "usampler3D"}, {GL_IMAGE_2D, "image2D"},
-    {GL_IMAGE_3D, "image3D"}, {GL_INT_IMAGE_2D, "iimage2D"},
-    {GL_UNSIGNED_INT_IMAGE_2D, "uimage2D"}, {GL_IMAGE_CUBE, "imageCube"},
-    {GL_IMAGE_2D_ARRAY, "image2DArray"}, {GL_IMAGE_BUFFER, "imageBuffer"},
+    {GL_SAMPLER_2D_MULTISAMPLE, "sampler2DMS"},
+    {GL_SAMPLER_BUFFER, "samplerBuffer"},
+    {GL_SAMPLER_2D_RECT, "sampler2DRect"},
+    {GL_INT_SAMPLER_2D, "isampler2D"},
+    {GL_UNSIGNED_INT_SAMPLER_2D, "usampler2D"},
+    {GL_INT_SAMPLER_3D, "isampler3D"},
+    {GL_UNSIGNED_INT_SAMPLER_3D, "usampler3D"},
+    {GL_IMAGE_2D, "image2D"},
+    {GL_IMAGE_3D, "image3D"},
+    {GL_INT_IMAGE_2D, "iimage2D"},
+    {GL_UNSIGNED_INT_IMAGE_2D, "uimage2D"},
+    {GL_IMAGE_CUBE, "imageCube"},
+    {GL_IMAGE_2D_ARRAY, "image2DArray"},
+    {GL_IMAGE_BUFFER, "imageBuffer"},
     {GL_UNSIGNED_INT_ATOMIC_COUNTER, "atomic_uint"},
 };
 
@@ -59,11 +89,16 @@ bool is_opaque(GLenum type) {
 bool accepts(GLenum declared, GLenum given) {
     if (declared == given) return true;
     switch (given) {
-        case GL_INT: return declared == GL_BOOL || is_opaque(declared);
-        case GL_INT_VEC2: return declared == GL_BOOL_VEC2;
-        case GL_INT_VEC3: return declared == GL_BOOL_VEC3;
-        case GL_INT_VEC4: return declared == GL_BOOL_VEC4;
-        default: return false;
+        case GL_INT:
+            return declared == GL_BOOL || is_opaque(declared);
+        case GL_INT_VEC2:
+            return declared == GL_BOOL_VEC2;
+        case GL_INT_VEC3:
+            return declared == GL_BOOL_VEC3;
+        case GL_INT_VEC4:
+            return declared == GL_BOOL_VEC4;
+        default:
+            return false;
     }
 }
 
@@ -86,8 +121,8 @@ std::string glsl_type_name(GLenum type) {
 GLint Program::checked_location(const std::string& name, GLenum given, GLsizei count) const {
     const UniformInfo* u = uniform(name);
     if (!u) throw_unknown(name);
-    const std::string declared = u->is_array ? array_type(u->type, u->array_size)
-                                             : glsl_type_name(u->type);
+    const std::string declared =
+        u->is_array ? array_type(u->type, u->array_size) : glsl_type_name(u->type);
     const std::string given_text = count < 0 ? glsl_type_name(given) : array_type(given, count);
     const std::string where = "program '" + label_ + "' (files: " + files_text() + "): ";
     if (count == 0)
@@ -132,21 +167,20 @@ void Program::set(const std::string& name, bool v) const {
     glProgramUniform1i(id(), checked_location(name, GL_BOOL, -1), v ? 1 : 0);
 }
 
-#define FW_SET_VALUE(T, TYPE, CALL)                                       \
-    void Program::set(const std::string& name, const T& v) const {      \
+#define FW_SET_VALUE(T, TYPE, CALL)                                         \
+    void Program::set(const std::string& name, const T& v) const {          \
         CALL(id(), checked_location(name, TYPE, -1), 1, glm::value_ptr(v)); \
     }
-#define FW_SET_MATRIX(T, TYPE, CALL)                                                \
-    void Program::set(const std::string& name, const T& v) const {                \
+#define FW_SET_MATRIX(T, TYPE, CALL)                                                  \
+    void Program::set(const std::string& name, const T& v) const {                    \
         CALL(id(), checked_location(name, TYPE, -1), 1, GL_FALSE, glm::value_ptr(v)); \
     }
 // Arrays: std::vector stores its elements contiguously, and each glm type is
 // tightly packed, so v.data() is exactly what glProgramUniform*v expects.
-#define FW_SET_ARRAY(T, SCALAR, TYPE, CALL)                                        \
-    void Program::set(const std::string& name, const std::vector<T>& v) const {    \
-        const auto n = static_cast<GLsizei>(v.size());                              \
-        CALL(id(), checked_location(name, TYPE, n), n,                              \
-             reinterpret_cast<const SCALAR*>(v.data()));                            \
+#define FW_SET_ARRAY(T, SCALAR, TYPE, CALL)                                                        \
+    void Program::set(const std::string& name, const std::vector<T>& v) const {                    \
+        const auto n = static_cast<GLsizei>(v.size());                                             \
+        CALL(id(), checked_location(name, TYPE, n), n, reinterpret_cast<const SCALAR*>(v.data())); \
     }
 
 FW_SET_VALUE(glm::vec2, GL_FLOAT_VEC2, glProgramUniform2fv)

@@ -13,10 +13,14 @@ std::string quoted(const std::string& label) {
 
 std::size_t index_size_of(GLenum type) {
     switch (type) {
-        case GL_UNSIGNED_BYTE: return 1;
-        case GL_UNSIGNED_SHORT: return 2;
-        case GL_UNSIGNED_INT: return 4;
-        default: return 0;
+        case GL_UNSIGNED_BYTE:
+            return 1;
+        case GL_UNSIGNED_SHORT:
+            return 2;
+        case GL_UNSIGNED_INT:
+            return 4;
+        default:
+            return 0;
     }
 }
 
@@ -29,8 +33,7 @@ VertexLayout& VertexLayout::add(const VertexAttribute& a) {
                              " is given two attributes; each shader input needs its own");
     if (a.components < 1 || a.components > 4)
         throw UsageError("VertexAttribute.components must be 1 to 4 (location " +
-                         std::to_string(a.location) + " has " + std::to_string(a.components) +
-                         ")");
+                         std::to_string(a.location) + " has " + std::to_string(a.components) + ")");
     attributes_.push_back(a);
     return *this;
 }
@@ -41,16 +44,16 @@ VertexArray::VertexArray(const VertexArrayDesc& desc) : label_(desc.label) {
         throw UsageError("VertexArrayDesc.vertices must point to a created Buffer" + where);
     const VertexLayout& layout = desc.layout;
     if (layout.attributes().empty())
-        throw UsageError("VertexArrayDesc.layout has no attributes; add them with .attr()" +
-                         where);
+        throw UsageError("VertexArrayDesc.layout has no attributes; add them with .attr()" + where);
     if (layout.stride() == 0)
         throw UsageError("VertexArrayDesc.layout has stride 0; use VertexLayout::of<Vertex>()" +
                          where);
     index_size_ = index_size_of(desc.index_type);
     if (index_size_ == 0)
-        throw UsageError("VertexArrayDesc.index_type must be GL_UNSIGNED_BYTE, "
-                         "GL_UNSIGNED_SHORT or GL_UNSIGNED_INT, not " +
-                         gl_enum_name(desc.index_type) + where);
+        throw UsageError(
+            "VertexArrayDesc.index_type must be GL_UNSIGNED_BYTE, "
+            "GL_UNSIGNED_SHORT or GL_UNSIGNED_INT, not " +
+            gl_enum_name(desc.index_type) + where);
     if (desc.indices && desc.indices->id() == 0)
         throw UsageError("VertexArrayDesc.indices points to an empty Buffer" + where);
     GLint max_attribs = 0;
@@ -58,8 +61,8 @@ VertexArray::VertexArray(const VertexArrayDesc& desc) : label_(desc.label) {
     for (const VertexAttribute& a : layout.attributes())
         if (a.location >= static_cast<GLuint>(max_attribs))
             throw UsageError("VertexAttribute.location " + std::to_string(a.location) +
-                             " is not below GL_MAX_VERTEX_ATTRIBS (" +
-                             std::to_string(max_attribs) + ")" + where);
+                             " is not below GL_MAX_VERTEX_ATTRIBS (" + std::to_string(max_attribs) +
+                             ")" + where);
 
     GLuint id = 0;
     glGenVertexArrays(1, &id);

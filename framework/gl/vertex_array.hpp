@@ -18,10 +18,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "framework/gl/buffer.hpp"
 #include "framework/gl/handle.hpp"
@@ -110,9 +109,9 @@ private:
 };
 
 struct VertexArrayDesc {
-    const Buffer* vertices = nullptr;  // required; read through `layout`
-    VertexLayout layout;               // at least one attribute
-    const Buffer* indices = nullptr;   // optional; needed by draw_indexed()
+    const Buffer* vertices = nullptr;     // required; read through `layout`
+    VertexLayout layout;                  // at least one attribute
+    const Buffer* indices = nullptr;      // optional; needed by draw_indexed()
     GLenum index_type = GL_UNSIGNED_INT;  // or GL_UNSIGNED_SHORT, GL_UNSIGNED_BYTE
     std::string label;
 };

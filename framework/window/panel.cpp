@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
@@ -47,26 +48,32 @@ bool enum_combo(const char* label, const std::vector<std::string>& choices, int&
 
 void param_widget(const Param& p, ParamValues& values) {
     std::string label = p.name;
-    if (p.shortcut != 0) label += "  [" + std::string(1, static_cast<char>(std::toupper(p.shortcut))) + "]";
+    if (p.shortcut != 0)
+        label += "  [" + std::string(1, static_cast<char>(std::toupper(p.shortcut))) + "]";
     // AlwaysClamp: Ctrl+click lets the user type a value; keep it in range.
     const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
     switch (p.type) {
         case ParamType::Float: {
             double lo = p.min, hi = p.max;
-            ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &values.number_ref(p.name), &lo,
-                                &hi, slider_format("%.3f", p.unit_text).c_str(), clamp);
+            ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &values.number_ref(p.name),
+                                &lo, &hi, slider_format("%.3f", p.unit_text).c_str(), clamp);
             break;
         }
         case ParamType::Int: {
             double& value = values.number_ref(p.name);
             int i = static_cast<int>(std::lround(value));
-            if (ImGui::SliderInt(label.c_str(), &i, static_cast<int>(p.min), static_cast<int>(p.max),
-                                 slider_format("%d", p.unit_text).c_str(), clamp))
+            if (ImGui::SliderInt(label.c_str(), &i, static_cast<int>(p.min),
+                                 static_cast<int>(p.max), slider_format("%d", p.unit_text).c_str(),
+                                 clamp))
                 value = i;
             break;
         }
-        case ParamType::Bool: ImGui::Checkbox(label.c_str(), &values.flag_ref(p.name)); break;
-        case ParamType::Enum: enum_combo(label.c_str(), p.choices, values.choice_ref(p.name)); break;
+        case ParamType::Bool:
+            ImGui::Checkbox(label.c_str(), &values.flag_ref(p.name));
+            break;
+        case ParamType::Enum:
+            enum_combo(label.c_str(), p.choices, values.choice_ref(p.name));
+            break;
         case ParamType::Color:
             ImGui::ColorEdit3(label.c_str(), glm::value_ptr(values.color_ref(p.name)));
             break;
@@ -75,7 +82,7 @@ void param_widget(const Param& p, ParamValues& values) {
 }
 
 void shortcut_table(const LabInfo& info) {
-    if (!ImGui::CollapsingHeader("Keys", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!ImGui::CollapsingHeader("All keys and controls")) return;
     if (ImGui::BeginTable("keys", 2)) {
         for (const Shortcut& s : shortcut_list(info)) {
             ImGui::TableNextRow();
@@ -95,22 +102,28 @@ void draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string
     const LabInfo& info = lab.info;
     char name[128];
     std::snprintf(name, sizeof name, "lab %02d %s", info.number, info.id.c_str());
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    const ImGuiViewport* view = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(view->WorkPos.x + 8, view->WorkPos.y + 8),
+                            ImGuiCond_FirstUseEver);
+    // Taller than the window: scroll rather than hang off the bottom.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(FLT_MAX, view->WorkSize.y - 16));
+    ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::TextUnformatted(info.title.c_str());
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::TextDisabled("%.0f fps (%.1f ms), %s", static_cast<double>(io.Framerate),
+                        io.Framerate > 0.0f ? 1000.0 / static_cast<double>(io.Framerate) : 0.0,
+                        gl_renderer.c_str());
     ImGui::Separator();
 
-    ImGui::PushItemWidth(170);
+    ImGui::PushItemWidth(150);
     for (const Param& p : info.params) param_widget(p, params);
     ImGui::PopItemWidth();
     if (ImGui::Button("Reset to defaults")) params = default_params(lab);
 
-    shortcut_table(info);
     ImGui::Separator();
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::Text("%.0f fps (%.1f ms)", static_cast<double>(io.Framerate),
-                io.Framerate > 0.0f ? 1000.0 / static_cast<double>(io.Framerate) : 0.0);
-    ImGui::TextUnformatted(gl_renderer.c_str());
+    ImGui::TextUnformatted("R reload shaders   F12 screenshot   Esc quit");
+    shortcut_table(info);
     ImGui::End();
 }
 

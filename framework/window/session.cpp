@@ -2,9 +2,9 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -21,7 +21,8 @@ std::string g_glfw_error;
 void remember_glfw_error(int code, const char* description) {
     char buf[16];
     std::snprintf(buf, sizeof buf, "0x%x", static_cast<unsigned>(code));
-    g_glfw_error = std::string(description ? description : "no description") + " (GLFW error " + buf + ")";
+    g_glfw_error =
+        std::string(description ? description : "no description") + " (GLFW error " + buf + ")";
 }
 
 std::string variable_state(const char* name) {

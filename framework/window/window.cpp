@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -59,10 +60,14 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
     if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) return;
     if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) return;
     bool press = action == GLFW_PRESS;
-    if (key == GLFW_KEY_ESCAPE && press) glfwSetWindowShouldClose(window, GLFW_TRUE);
-    else if (key == GLFW_KEY_F12 && press) in.screenshot = true;
-    else if (key == GLFW_KEY_R && press) in.reload = true;
-    else win::apply_param_key(*in.params, key, (mods & GLFW_MOD_SHIFT) != 0, !press);
+    if (key == GLFW_KEY_ESCAPE && press)
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+    else if (key == GLFW_KEY_F12 && press)
+        in.screenshot = true;
+    else if (key == GLFW_KEY_R && press)
+        in.reload = true;
+    else
+        win::apply_param_key(*in.params, key, (mods & GLFW_MOD_SHIFT) != 0, !press);
 }
 
 void on_mouse_button(GLFWwindow* window, int button, int action, int /*mods*/) {
@@ -121,8 +126,6 @@ std::string window_title(const LabInfo& info) {
     return "lab " + std::string(number) + " " + info.id + ": " + info.title;
 }
 
-}  // namespace
-
 // The lab's frame, drawn into `fb` the way LabRenderer::render draws it
 // offscreen, then copied into the window. Returns what went wrong, if anything.
 std::vector<std::string> draw_lab(Lab& lab, const std::string& id, const ParamValues& params,
@@ -151,6 +154,25 @@ std::vector<std::string> draw_lab(Lab& lab, const std::string& id, const ParamVa
     return problems;
 }
 
+// R: recompiles every program from disk; the messages of those that failed.
+std::vector<std::string> reload_shaders(ProgramLibrary& programs, const std::string& id) {
+    std::vector<std::string> errors;
+    for (const std::string& e : programs.reload_all())
+        errors.push_back(
+            "Shader reload failed; the last good program keeps drawing. "
+            "Fix the file and press R.\n" +
+            e);
+    if (errors.empty()) {
+        std::printf("lab %s: shaders reloaded\n", id.c_str());
+        std::fflush(stdout);
+    } else {
+        // Mesa also posts compile errors as KHR_debug messages; the compiler
+        // log above says all they say, and check_gl must not blame the draw.
+        take_debug_messages();
+    }
+    return errors;
+}
+
 // Prints each problem once, when it appears, so the terminal has it too.
 void print_new(const std::vector<std::string>& problems, std::vector<std::string>& printed) {
     for (const std::string& p : problems)
@@ -163,6 +185,8 @@ void print_new(const std::vector<std::string>& problems, std::vector<std::string
 
 void run_window(const RegisteredLab& lab, ParamValues params, const WindowOptions& options) {
     const std::string& id = lab.info.id;
+    const char* script = std::getenv("LAB_RUN_SCRIPT");
+    const std::vector<win::ScriptedKey> scripted = win::parse_key_script(script ? script : "");
     win::GlfwLibrary glfw(id);
     win::GlfwWindow window(id, window_title(lab.info), options.width, options.height);
     ContextInfo context{"glfw", "glx", "", "", ""};
@@ -191,8 +215,10 @@ void run_window(const RegisteredLab& lab, ParamValues params, const WindowOption
     const auto start = std::chrono::steady_clock::now();
     for (int frame = 1;; ++frame) {
         glfwPollEvents();
-        const bool last = glfwWindowShouldClose(window.get()) ||
-                          (options.frames > 0 && frame >= options.frames);
+        for (const win::ScriptedKey& k : scripted)
+            if (k.frame == frame) on_key(window.get(), k.key, 0, GLFW_PRESS, k.mods);
+        const bool last =
+            glfwWindowShouldClose(window.get()) || (options.frames > 0 && frame >= options.frames);
         int width = 0, height = 0;
         glfwGetFramebufferSize(window.get(), &width, &height);
         if (width == 0 || height == 0) {  // minimised
@@ -203,12 +229,7 @@ void run_window(const RegisteredLab& lab, ParamValues params, const WindowOption
         if (input.reload) {
             input.reload = false;
             printed.clear();  // a failed retry prints its error again
-            reload_errors.clear();
-            for (const std::string& e : programs.reload_all())
-                reload_errors.push_back("Shader reload failed; the last good program keeps "
-                                        "drawing. Fix the file and press R.\n" + e);
-            if (reload_errors.empty()) std::printf("lab %s: shaders reloaded\n", id.c_str());
-            std::fflush(stdout);
+            reload_errors = reload_shaders(programs, id);
         }
         if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
             framebuffer.reset();
@@ -216,7 +237,8 @@ void run_window(const RegisteredLab& lab, ParamValues params, const WindowOption
                 width, height, "window " + std::to_string(width) + "x" + std::to_string(height)});
         }
 
-        double time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        double time =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::vector<std::string> problems = reload_errors;
         for (std::string& p : draw_lab(*instance, id, params, *framebuffer, time))
             problems.push_back(std::move(p));

@@ -29,12 +29,12 @@ std::vector<Vertex> order_quads() {
 // 1 4) with a fourth hanging below (1-3-4).
 std::vector<Vertex> face_set_vertices() {
     return {
-        {{-0.8f, 0.5f, 0.0f}, kRed},      // 0
-        {{-0.4f, -0.3f, 0.0f}, kGreen},   // 1
-        {{0.0f, 0.5f, 0.0f}, kBlue},      // 2
-        {{0.0f, -0.9f, 0.0f}, kYellow},   // 3
-        {{0.4f, -0.3f, 0.0f}, kCyan},     // 4
-        {{0.8f, 0.5f, 0.0f}, kMagenta},   // 5
+        {{-0.8f, 0.5f, 0.0f}, kRed},     // 0
+        {{-0.5f, -0.3f, 0.0f}, kGreen},  // 1
+        {{0.0f, 0.5f, 0.0f}, kBlue},     // 2
+        {{0.0f, -0.8f, 0.0f}, kYellow},  // 3
+        {{0.5f, -0.3f, 0.0f}, kCyan},    // 4
+        {{0.8f, 0.5f, 0.0f}, kMagenta},  // 5
     };
 }
 
@@ -57,8 +57,8 @@ std::vector<Vertex> cube_vertices() {
     struct Face {
         glm::vec3 normal, color;
     };
-    const Face faces[] = {{{1, 0, 0}, kRed},   {{-1, 0, 0}, kCyan},   {{0, 1, 0}, kGreen},
-                          {{0, -1, 0}, kMagenta}, {{0, 0, 1}, kBlue}, {{0, 0, -1}, kYellow}};
+    const Face faces[] = {{{1, 0, 0}, kRed},      {{-1, 0, 0}, kCyan}, {{0, 1, 0}, kGreen},
+                          {{0, -1, 0}, kMagenta}, {{0, 0, 1}, kBlue},  {{0, 0, -1}, kYellow}};
     std::vector<Vertex> v;
     for (const Face& f : faces) {
         // Two edge directions u, v of the face with u x v = normal, so that

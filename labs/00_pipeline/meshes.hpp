@@ -28,7 +28,7 @@ std::vector<Vertex> face_set_vertices();  // 6 vertices, one colour each
 std::vector<GLuint> face_set_indices();   // {0,2,1, 1,3,4, 1,4,2, 2,4,5}
 
 // storage=flat: the vertex list that `indices` expands to, one vertex per
-// index (12 for the face set). STUDENT PART.
+// index (12 for the face set). A student part.
 std::vector<Vertex> expand_indices(const std::vector<Vertex>& vertices,
                                    const std::vector<GLuint>& indices);
 

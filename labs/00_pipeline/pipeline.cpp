@@ -34,9 +34,12 @@ struct PrimitiveMode {
     GLenum mode;
 };
 constexpr PrimitiveMode kPrimitiveModes[] = {
-    {"points", GL_POINTS},       {"lines", GL_LINES},
-    {"line_strip", GL_LINE_STRIP}, {"line_loop", GL_LINE_LOOP},
-    {"triangles", GL_TRIANGLES}, {"triangle_strip", GL_TRIANGLE_STRIP},
+    {"points", GL_POINTS},
+    {"lines", GL_LINES},
+    {"line_strip", GL_LINE_STRIP},
+    {"line_loop", GL_LINE_LOOP},
+    {"triangles", GL_TRIANGLES},
+    {"triangle_strip", GL_TRIANGLE_STRIP},
     {"triangle_fan", GL_TRIANGLE_FAN},
 };
 
@@ -49,7 +52,7 @@ constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
 // written and the depth buffer is left alone, so the last one drawn wins.
 void set_depth_test(bool on) {
     // BEGIN SOLUTION
-    // STUDENT: (void)on;  // TODO: when on, glEnable(GL_DEPTH_TEST) and glDepthFunc(GL_LESS); else glDisable
+    // STUDENT: (void)on;  // TODO: if on: glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS); else off
     if (on) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
@@ -65,7 +68,7 @@ void set_depth_test(bool on) {
 // faces turned towards it.
 void set_culling(const std::string& cull) {
     // BEGIN SOLUTION
-    // STUDENT: (void)cull;  // TODO: glFrontFace(GL_CCW); unless "none", glEnable(GL_CULL_FACE) and glCullFace
+    // STUDENT: (void)cull;  // TODO: glFrontFace; unless "none", glEnable(GL_CULL_FACE), glCullFace
     glFrontFace(GL_CCW);
     if (cull == "none") {
         glDisable(GL_CULL_FACE);
@@ -100,7 +103,8 @@ public:
                       "primitives: 6 vertices in each primitive mode; culling: a cube")
                 .key('S'),
             fw::Param::boolean("depth_test", true)
-                .help("keep the nearest fragment (GL_LESS) instead of the last drawn (order, culling)")
+                .help("keep the nearest fragment (GL_LESS) instead of the last drawn (order, "
+                      "culling)")
                 .key('D'),
             fw::Param::choice("first", {"red", "blue"}, "red")
                 .help("which quad is drawn first (order)")
@@ -147,8 +151,8 @@ public:
         face_vbo_ = fw::Buffer::from(vertices, GL_ARRAY_BUFFER, "face set vertices");
         face_ibo_ = fw::Buffer::from(indices, GL_ELEMENT_ARRAY_BUFFER, "face set indices");
         faces_ = fw::VertexArray({&face_vbo_, layout, &face_ibo_, GL_UNSIGNED_INT, "face set"});
-        flat_vbo_ = fw::Buffer::from(expand_indices(vertices, indices), GL_ARRAY_BUFFER,
-                                     "face set, flat");
+        flat_vbo_ =
+            fw::Buffer::from(expand_indices(vertices, indices), GL_ARRAY_BUFFER, "face set, flat");
         flat_ = fw::VertexArray({&flat_vbo_, layout, nullptr, GL_UNSIGNED_INT, "face set, flat"});
 
         cube_vbo_ = fw::Buffer::from(cube_vertices(), GL_ARRAY_BUFFER, "cube vertices");
@@ -213,7 +217,8 @@ private:
     // scene=culling: P * V * M with M = rotateX(pitch) * rotateY(yaw).
     void draw_cube(const fw::ParamValues& p, const fw::Frame& frame) {
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-        const glm::mat4 projection = glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar);
+        const glm::mat4 projection =
+            glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar);
         const glm::mat4 view = glm::lookAt(kEye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
         glm::mat4 model = glm::rotate(glm::mat4(1.0f), glm::radians(p.number("pitch")), {1, 0, 0});
         model = glm::rotate(model, glm::radians(p.number("yaw")), {0, 1, 0});

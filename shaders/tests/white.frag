@@ -1,0 +1,7 @@
+// Test shader: white.
+#version 430 core
+out vec4 o_color;
+
+void main() {
+    o_color = vec4(1.0);
+}

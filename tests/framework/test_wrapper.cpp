@@ -1,0 +1,415 @@
+// The GL wrapper (framework/gl), piglit style: set up, draw, probe, with
+// Expected/Observed printed for every probe. Runs once per backend.
+#include <glad/gl.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "framework/gl.hpp"
+#include "tests/support/test_support.hpp"
+
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb_image.h>
+
+namespace {
+
+constexpr GLuint kPosition = 0, kColor = 1, kUv = 1, kCell = 2;
+const glm::vec3 kBlack(0, 0, 0), kRed(1, 0, 0), kGreen(0, 1, 0), kBlue(0, 0, 1), kWhite(1, 1, 1);
+
+struct ColorVertex {
+    glm::vec3 position;
+    glm::vec3 color;
+};
+
+fw::VertexLayout color_layout() {
+    return fw::VertexLayout::of<ColorVertex>()
+        .attr(kPosition, &ColorVertex::position)
+        .attr(kColor, &ColorVertex::color);
+}
+
+// Two counter-clockwise triangles covering [x0, x1] x [y0, y1] at NDC depth z.
+std::vector<ColorVertex> quad(float x0, float y0, float x1, float y1, float z, glm::vec3 c) {
+    return {{{x0, y0, z}, c}, {{x1, y0, z}, c}, {{x1, y1, z}, c},
+            {{x0, y0, z}, c}, {{x1, y1, z}, c}, {{x0, y1, z}, c}};
+}
+
+void clear_black() {
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+// The message of the E that `f` throws; a failed check if it throws nothing.
+template <class E = fw::Error, class F>
+std::string thrown(F&& f) {
+    try {
+        f();
+    } catch (const E& e) {
+        return e.what();
+    }
+    FAIL_CHECK("expected an exception; none was thrown");
+    return {};
+}
+
+void check_mentions(const std::string& message, const std::vector<std::string>& needles) {
+    MESSAGE("observed message:\n" << message);
+    for (const std::string& n : needles)
+        CHECK_MESSAGE(message.find(n) != std::string::npos,
+                      "expected the message to contain '" << n << "'");
+}
+
+// Leaves no GL error or debug message behind for the next test.
+void drain_gl_errors() {
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    fw::take_debug_messages();
+}
+
+std::string to_text(const std::vector<float>& v) {
+    std::string out;
+    for (float f : v) out += (out.empty() ? "" : " ") + std::to_string(f);
+    return "[" + out + "]";
+}
+
+int count_pixels(const fw::Image& img, fw::Rgba8 colour) {
+    int n = 0;
+    for (const fw::Rgba8& p : img.pixels) n += p == colour ? 1 : 0;
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("buffer: update and read round trip, ranges checked") {
+    const std::vector<float> data{1, 2, 3, 4, 5, 6, 7, 8};
+    fw::Buffer buf = fw::Buffer::from(data, GL_ARRAY_BUFFER, "round trip");
+    CHECK(buf.size() == 32);
+    CHECK(fw::object_label(GL_BUFFER, buf.id()) == "round trip");
+
+    const std::vector<float> patch{-1, -2};
+    buf.update(2 * sizeof(float), patch.data(), 2 * sizeof(float));
+    const std::vector<float> expected{1, 2, -1, -2, 5, 6, 7, 8};
+    const std::vector<float> observed = buf.read_as<float>();
+    CHECK_MESSAGE(observed == expected,
+                  "expected " << to_text(expected) << " observed " << to_text(observed));
+
+    std::vector<std::uint8_t> tail = buf.read(6 * sizeof(float));
+    REQUIRE(tail.size() == 8);
+    float seventh = 0;
+    std::memcpy(&seventh, tail.data(), sizeof seventh);
+    CHECK(seventh == 7.0f);
+
+    check_mentions(thrown<fw::UsageError>([&] { buf.update(30, patch.data(), 8); }),
+                   {"'round trip'", "update of bytes [30, 38)", "32 bytes"});
+    check_mentions(thrown<fw::UsageError>([&] { buf.read(40, 4); }), {"read of bytes [40, 44)"});
+    check_mentions(thrown<fw::UsageError>([] {
+                       fw::BufferDesc desc;
+                       desc.label = "empty";
+                       fw::Buffer b(desc);
+                   }),
+                   {"BufferDesc.size must be greater than zero", "'empty'"});
+
+    fw::Buffer moved = std::move(buf);
+    CHECK(buf.id() == 0);
+    CHECK(moved.id() != 0);
+}
+
+TEST_CASE("vertex array: vec3, vec2 and ivec2 attributes from one struct all arrive") {
+    struct Vertex {
+        glm::vec3 position;
+        glm::vec2 uv;
+        glm::ivec2 cell;
+    };
+    fw::VertexLayout layout = fw::VertexLayout::of<Vertex>()
+                                  .attr(kPosition, &Vertex::position)
+                                  .attr(kUv, &Vertex::uv)
+                                  .attr(kCell, &Vertex::cell);
+    REQUIRE(layout.attributes().size() == 3);
+    CHECK(layout.stride() == sizeof(Vertex));
+    CHECK(layout.attributes()[1].offset == 12);
+    CHECK(layout.attributes()[1].components == 2);
+    CHECK(layout.attributes()[2].offset == 20);
+    CHECK(layout.attributes()[2].type == GL_INT);
+    CHECK(layout.attributes()[2].integer);
+
+    // Four vertical strips; strip k has uv (0.2 (k+1), 1 - 0.2 (k+1)) and
+    // cell (k+1, 2k+3), so blue = ((k+1) * 16 + 2k+3) / 255.
+    std::vector<Vertex> vertices;
+    for (int k = 0; k < 4; ++k) {
+        float x0 = -1.0f + 0.5f * k, x1 = x0 + 0.5f, u = 0.2f * (k + 1);
+        glm::ivec2 cell(k + 1, 2 * k + 3);
+        for (glm::vec2 p : {glm::vec2(x0, -1), glm::vec2(x1, -1), glm::vec2(x1, 1),
+                            glm::vec2(x0, -1), glm::vec2(x1, 1), glm::vec2(x0, 1)})
+            vertices.push_back({glm::vec3(p, 0.0f), glm::vec2(u, 1.0f - u), cell});
+    }
+    fw::Buffer vbo = fw::Buffer::from(vertices, GL_ARRAY_BUFFER, "strips");
+    fw::VertexArray vao({&vbo, layout, nullptr, GL_UNSIGNED_INT, "strips"});
+    CHECK(vao.vertex_count() == 24);
+    fw::Program prog = fw::Program::from_files({"tests/attribs.vert", "tests/attribs.frag"});
+
+    fw::Framebuffer fb({64, 16, "attributes"});
+    fb.bind();
+    clear_black();
+    prog.use();
+    vao.draw(GL_TRIANGLES, 24);
+    fw::check_gl("attribute draw");
+    fw::Image img = fb.read_color();
+    bool pass = true;
+    for (int k = 0; k < 4; ++k) {
+        float u = 0.2f * (k + 1);
+        glm::vec3 expected(u, 1.0f - u, ((k + 1) * 16 + 2 * k + 3) / 255.0f);
+        pass = fw::test::probe_rgb(img, 8 + 16 * k, 8, expected) && pass;
+    }
+    CHECK(pass);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("vertex array: indexed and flat storage draw the same image") {
+    // The lecture's indexed face set: 6 vertices, 4 triangles.
+    const glm::vec3 yellow(1, 1, 0), cyan(0, 1, 1), magenta(1, 0, 1);
+    const std::vector<ColorVertex> vertices = {
+        {{-0.8f, -0.8f, 0}, kRed},  {{0.0f, -0.8f, 0}, kGreen}, {{-0.4f, 0.0f, 0}, kBlue},
+        {{0.8f, -0.8f, 0}, yellow}, {{0.4f, 0.0f, 0}, cyan},    {{0.0f, 0.8f, 0}, magenta}};
+    const std::vector<GLuint> indices = {0, 2, 1, 1, 3, 4, 1, 4, 2, 2, 4, 5};
+    std::vector<ColorVertex> flat;
+    for (GLuint i : indices) flat.push_back(vertices[i]);
+
+    fw::Buffer indexed_vbo = fw::Buffer::from(vertices, GL_ARRAY_BUFFER, "indexed vertices");
+    fw::Buffer ibo = fw::Buffer::from(indices, GL_ELEMENT_ARRAY_BUFFER, "indices");
+    fw::Buffer flat_vbo = fw::Buffer::from(flat, GL_ARRAY_BUFFER, "flat vertices");
+    fw::VertexArray indexed({&indexed_vbo, color_layout(), &ibo, GL_UNSIGNED_INT, "indexed"});
+    fw::VertexArray expanded({&flat_vbo, color_layout(), nullptr, GL_UNSIGNED_INT, "flat"});
+    CHECK(indexed.index_count() == 12);
+    fw::Program prog = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});
+    prog.use();
+
+    fw::Framebuffer fb_indexed({64, 64, "indexed"}), fb_flat({64, 64, "flat"});
+    fb_indexed.bind();
+    clear_black();
+    indexed.draw_indexed(GL_TRIANGLES, 12);
+    fb_flat.bind();
+    clear_black();
+    expanded.draw(GL_TRIANGLES, 12);
+    fw::check_gl("indexed and flat draws");
+    fw::Image a = fb_indexed.read_color(), b = fb_flat.read_color();
+
+    int differing = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
+    int covered = static_cast<int>(a.pixels.size()) - count_pixels(a, {0, 0, 0, 255});
+    MESSAGE("pixels covered " << covered << ", differing between indexed and flat " << differing);
+    CHECK(covered > 500);
+    CHECK(differing == 0);
+    // Near the centroid of the top triangle (blue, cyan, magenta).
+    CHECK(fw::test::probe_rgb(a, 32, 40, glm::vec3(1.0f / 3, 1.0f / 3, 1.0f), 0.06f));
+
+    check_mentions(thrown<fw::UsageError>([&] { expanded.draw_indexed(GL_TRIANGLES, 3); }),
+                   {"'flat'", "no index buffer"});
+    check_mentions(thrown<fw::UsageError>([&] { expanded.draw(GL_TRIANGLES, 13); }),
+                   {"[0, 13)", "holds 12"});
+    check_mentions(thrown<fw::UsageError>([&] { indexed.draw_indexed(GL_TRIANGLES, 6, 9); }),
+                   {"[9, 15)", "holds 12"});
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("shader: a compile error names the file, the stage, the line and quotes it") {
+    std::string msg = thrown([] {
+        fw::Program::from_files({"tests/color.vert", "tests/broken.frag"});
+    });
+    check_mentions(msg, {"shaders/tests/broken.frag:9:", "fragment shader failed to compile",
+                         "undeclared_colour", "  9 |     o_color = vec4(undeclared_colour, 1.0);"});
+
+    check_mentions(thrown([] { fw::Shader::from_file("tests/does_not_exist.frag"); }),
+                   {"cannot read shader file", "tests/does_not_exist.frag", fw::shader_dir()});
+    check_mentions(thrown<fw::UsageError>([] { fw::Shader::from_file("tests/color.glsl"); }),
+                   {"tests/color.glsl", ".vert", ".frag", ".comp", "tessellation control"});
+}
+
+TEST_CASE("program: a link error names the files and gives the linker's log") {
+    std::string msg = thrown([] {
+        fw::Program::from_files({"tests/mismatch.vert", "tests/mismatch.frag"});
+    });
+    check_mentions(msg,
+                   {"failed to link", "tests/mismatch.vert", "tests/mismatch.frag", "v_value"});
+
+    fw::Program ok = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});
+    CHECK(ok.label() == "tests/color.vert + color.frag");
+    CHECK(fw::object_label(GL_PROGRAM, ok.id()) == ok.label());
+    CHECK(ok.files() == std::vector<std::string>{"tests/color.vert", "tests/color.frag"});
+}
+
+TEST_CASE("framebuffer: window pixel (x, y) is Image at(x, y) and PNG row H-1-y") {
+    const int w = 16, h = 8, x = 3, y = 5;
+    fw::Framebuffer fb({w, h, "orientation"});
+    fb.bind();
+    clear_black();
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, 1, 1);
+    glClearColor(1.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    fw::Image img = fb.read_color();
+    bool pass = fw::test::probe_rgb(img, x, y, kRed);
+    pass = fw::test::probe_rgb(img, x, h - 1 - y, kBlack) && pass;
+    CHECK(pass);
+    CHECK(count_pixels(img, {255, 0, 0, 255}) == 1);
+
+    const std::string path = fw::test::out_dir() + "/orientation.png";
+    fw::write_png(path, img);
+    int pw = 0, ph = 0, channels = 0;
+    unsigned char* png = stbi_load(path.c_str(), &pw, &ph, &channels, 4);
+    REQUIRE(png != nullptr);
+    CHECK(pw == w);
+    CHECK(ph == h);
+    auto red_at = [&](int row, int col) {
+        const unsigned char* p = png + (static_cast<std::size_t>(row) * pw + col) * 4;
+        return p[0] == 255 && p[1] == 0 && p[2] == 0;
+    };
+    // PNG rows run top to bottom, so window row y is PNG row H-1-y.
+    CHECK_MESSAGE(red_at(h - 1 - y, x),
+                  "expected red at PNG row " << h - 1 - y << ", column " << x);
+    CHECK_MESSAGE(!red_at(y, x), "expected black at PNG row " << y << ", column " << x);
+    stbi_image_free(png);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("framebuffer: a plane at NDC z = 0.5 reads back window depth 0.75") {
+    // Window depth = (z_ndc + 1) / 2 with glDepthRange(0, 1).
+    std::vector<ColorVertex> v = quad(-1, -1, 0, 1, 0.5f, kWhite);  // left half only
+    fw::Buffer vbo = fw::Buffer::from(v, GL_ARRAY_BUFFER, "depth plane");
+    fw::VertexArray vao({&vbo, color_layout(), nullptr, GL_UNSIGNED_INT, "depth plane"});
+    fw::Program prog = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});
+    fw::Framebuffer fb({32, 32, "depth"});
+    fb.bind();
+    clear_black();
+    glEnable(GL_DEPTH_TEST);
+    prog.use();
+    vao.draw(GL_TRIANGLES, 6);
+    glDisable(GL_DEPTH_TEST);
+    fw::check_gl("depth plane draw");
+    fw::DepthImage depth = fb.read_depth();
+    bool pass = fw::test::probe_depth(depth, 0, 0, 0.75f, 1e-6f);
+    pass = fw::test::probe_depth(depth, 15, 31, 0.75f, 1e-6f) && pass;
+    pass = fw::test::probe_depth(depth, 16, 16, 1.0f, 0.0f) && pass;  // cleared, not drawn
+    CHECK(pass);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("framebuffer: a size of zero or above the GL limit names the field and the limit") {
+    check_mentions(thrown<fw::UsageError>([] {
+                       fw::Framebuffer fb({0, 16, "zero"});
+                   }),
+                   {"FramebufferDesc.width must be 1 to", "not 0", "'zero'"});
+    check_mentions(thrown<fw::UsageError>([] {
+                       fw::Framebuffer fb({16, 1 << 20, "huge"});
+                   }),
+                   {"FramebufferDesc.height must be 1 to", "GL_MAX_", "not 1048576"});
+}
+
+TEST_CASE("query: primitives generated and samples passed for a known draw") {
+    // [-0.5, 0.5]^2 on a 64x64 target covers pixels 16..47 in x and y.
+    std::vector<ColorVertex> v = quad(-0.5f, -0.5f, 0.5f, 0.5f, 0.0f, kWhite);
+    fw::Buffer vbo = fw::Buffer::from(v, GL_ARRAY_BUFFER, "query quad");
+    fw::VertexArray vao({&vbo, color_layout(), nullptr, GL_UNSIGNED_INT, "query quad"});
+    fw::Program prog = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});
+    fw::Framebuffer fb({64, 64, "query"});
+    fb.bind();
+    clear_black();
+    prog.use();
+    fw::Query primitives(GL_PRIMITIVES_GENERATED, "primitives");
+    fw::Query samples(GL_SAMPLES_PASSED, "samples");
+    primitives.begin();
+    samples.begin();
+    vao.draw(GL_TRIANGLES, 6);
+    samples.end();
+    primitives.end();
+    fw::check_gl("query draw");
+    CHECK(primitives.result() == 2);
+    CHECK(samples.result() == 32 * 32);
+
+    check_mentions(thrown<fw::UsageError>([] { fw::Query q(GL_TEXTURE_2D); }),
+                   {"GL_PRIMITIVES_GENERATED", "GL_SAMPLES_PASSED"});
+    fw::Query unused(GL_SAMPLES_PASSED, "unused");
+    check_mentions(thrown<fw::UsageError>([&] { unused.end(); }), {"end() without begin()"});
+    check_mentions(thrown<fw::UsageError>([&] { (void)unused.result(); }), {"result() before"});
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("texture: create, bind and sample; data row 0 is the bottom row") {
+    const std::vector<fw::Rgba8> texels = {{255, 0, 0, 255},
+                                           {0, 255, 0, 255},  // bottom row: red, green
+                                           {0, 0, 255, 255},
+                                           {255, 255, 255, 255}};  // top row: blue, white
+    fw::Texture2DDesc desc;
+    desc.width = desc.height = 2;
+    desc.data = texels.data();
+    desc.min_filter = desc.mag_filter = GL_NEAREST;
+    desc.label = "2x2";
+    fw::Texture2D tex(desc);
+    CHECK(fw::object_label(GL_TEXTURE, tex.id()) == "2x2");
+
+    struct Vertex {
+        glm::vec3 position;
+        glm::vec2 uv;
+    };
+    std::vector<Vertex> v = {{{-1, -1, 0}, {0, 0}}, {{1, -1, 0}, {1, 0}}, {{1, 1, 0}, {1, 1}},
+                             {{-1, -1, 0}, {0, 0}}, {{1, 1, 0}, {1, 1}},  {{-1, 1, 0}, {0, 1}}};
+    fw::Buffer vbo = fw::Buffer::from(v, GL_ARRAY_BUFFER, "textured quad");
+    fw::VertexArray vao(
+        {&vbo,
+         fw::VertexLayout::of<Vertex>().attr(kPosition, &Vertex::position).attr(kUv, &Vertex::uv),
+         nullptr, GL_UNSIGNED_INT, "textured quad"});
+    fw::Program prog = fw::Program::from_files({"tests/textured.vert", "tests/textured.frag"});
+    constexpr GLuint kUnit = 1;
+    tex.bind(kUnit);
+    prog.set("u_texture", static_cast<int>(kUnit));
+    fw::Framebuffer fb({32, 32, "texture"});
+    fb.bind();
+    clear_black();
+    prog.use();
+    vao.draw(GL_TRIANGLES, 6);
+    fw::check_gl("textured draw");
+    fw::Image img = fb.read_color();
+    bool pass = fw::test::probe_rgb(img, 8, 8, kRed);
+    pass = fw::test::probe_rgb(img, 24, 8, kGreen) && pass;
+    pass = fw::test::probe_rgb(img, 8, 24, kBlue) && pass;
+    pass = fw::test::probe_rgb(img, 24, 24, kWhite) && pass;
+    CHECK(pass);
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    fw::Texture2DDesc bad;
+    bad.label = "bad";
+    check_mentions(thrown<fw::UsageError>([&] { fw::Texture2D t(bad); }),
+                   {"Texture2DDesc.width must be 1 to GL_MAX_TEXTURE_SIZE", "'bad'"});
+    bad.width = bad.height = 4;
+    bad.internal_format = GL_RGBA;  // unsized: glTexStorage2D refuses it
+    check_mentions(thrown<fw::UsageError>([&] { fw::Texture2D t(bad); }),
+                   {"Texture2DDesc.internal_format", "sized format"});
+    drain_gl_errors();
+}
+
+TEST_CASE("check_gl: a provoked error reports GL's message and the bound objects' labels") {
+    fw::enable_debug_output();
+    drain_gl_errors();
+    std::vector<ColorVertex> v = quad(-1, -1, 1, 1, 0, kWhite);
+    fw::Buffer vbo = fw::Buffer::from(v, GL_ARRAY_BUFFER, "check quad");
+    fw::VertexArray vao({&vbo, color_layout(), nullptr, GL_UNSIGNED_INT, "check quad"});
+    fw::Program prog = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});
+    fw::Framebuffer fb({16, 16, "checked target"});
+    fb.bind();
+    prog.use();
+    vao.bind();
+    CHECK_NOTHROW(fw::check_gl("clean state"));
+
+    glBindBuffer(0x1234, 0);  // not a buffer target: GL_INVALID_ENUM
+    check_mentions(thrown([] { fw::check_gl("deliberate glBindBuffer"); }),
+                   {"GL error after deliberate glBindBuffer: GL_INVALID_ENUM", "glBindBuffer",
+                    "program 'tests/color.vert + color.frag'", "vertex array 'check quad'",
+                    "framebuffer 'checked target'"});
+    CHECK_NOTHROW(fw::check_gl("after the error was reported"));
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}

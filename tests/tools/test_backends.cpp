@@ -1,0 +1,73 @@
+// The two offscreen backends render every checkpoint of every lab within the
+// fuzzy threshold of each other (SPEC.md, Checks, `image`), and `lab
+// render-checkpoints` writes the PNG, PFM and stats of each.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/test_support.hpp"
+
+namespace {
+
+// Renders all checkpoints on `backend`; false (with the reason logged) when
+// the backend is missing on this machine.
+bool render_all(const std::string& backend, const std::string& dir, std::string& why) {
+    std::filesystem::remove_all(dir);
+    auto r = fw::test::run_command(fw::test::bin_dir() + "/lab render-checkpoints --backend " +
+                                   backend + " --out " + dir);
+    MESSAGE("render-checkpoints --backend " << backend << ": exit " << r.exit_code << "\n" << r.output);
+    if (r.exit_code == 3) {
+        why = r.output;
+        return false;
+    }
+    REQUIRE(r.exit_code == 0);
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("osmesa and egl agree on every checkpoint") {
+    std::string out = fw::test::out_dir();
+    std::string why;
+    bool have_osmesa = render_all("osmesa", out + "/osmesa", why);
+    bool have_egl = have_osmesa && render_all("egl", out + "/egl", why);
+    if (!have_osmesa || !have_egl) {
+        const char* req = std::getenv("LAB_REQUIRE_BACKENDS");
+        if (req) FAIL("a backend is required (LAB_REQUIRE_BACKENDS=" << req << ") but: " << why);
+        std::printf("SKIP: needs both backends: %s\n", why.c_str());
+        std::exit(77);
+    }
+    int compared = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(out + "/osmesa")) {
+        if (entry.path().extension() != ".png") continue;
+        std::string rel = std::filesystem::relative(entry.path(), out + "/osmesa").string();
+        CAPTURE(rel);
+        fw::Image a = fw::read_png(entry.path().string());
+        fw::Image b = fw::read_png(out + "/egl/" + rel);
+        fw::CompareResult c = fw::compare_images(a, b);
+        MESSAGE(rel << ": " << c.summary());
+        CHECK(c.passed);
+
+        std::string pfm = entry.path().string();
+        pfm.replace(pfm.size() - 4, 4, ".pfm");
+        fw::DepthImage da = fw::read_pfm(pfm);
+        fw::DepthImage db = fw::read_pfm(out + "/egl/" + rel.substr(0, rel.size() - 4) + ".pfm");
+        REQUIRE(da.values.size() == db.values.size());
+        float worst = 0.0f;
+        for (size_t i = 0; i < da.values.size(); ++i)
+            worst = std::max(worst, std::fabs(da.values[i] - db.values[i]));
+        MESSAGE(rel << ": largest depth difference " << worst);
+        CHECK(worst <= 1e-5f);
+
+        std::string json_path = pfm.substr(0, pfm.size() - 4) + ".json";
+        std::ifstream in(json_path);
+        auto stats = nlohmann::json::parse(in);
+        CHECK(stats["backend"] == "osmesa");
+        CHECK(stats["width"] == 512);
+        ++compared;
+    }
+    MESSAGE(compared << " checkpoints compared");
+    CHECK(compared >= 6);
+}
