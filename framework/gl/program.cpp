@@ -93,6 +93,7 @@ Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
         std::string log(static_cast<std::size_t>(log_length > 0 ? log_length : 0), '\0');
         if (log_length > 0) glGetProgramInfoLog(id, log_length, nullptr, log.data());
         while (!log.empty() && log.back() == '\0') log.pop_back();
+        take_debug_messages();  // as for compile errors: the exception carries it
         throw Error("program '" + p.label_ + "' failed to link (files: " + p.files_text() + "):\n" +
                     indented(log));
     }

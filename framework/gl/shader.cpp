@@ -154,7 +154,12 @@ Shader Shader::from_source(Stage stage, const std::string& source, const std::st
     std::string log(static_cast<std::size_t>(log_length > 0 ? log_length : 0), '\0');
     if (log_length > 0) glGetShaderInfoLog(id, log_length, nullptr, log.data());
     while (!log.empty() && log.back() == '\0') log.pop_back();
-    if (ok != GL_TRUE) throw Error(format_compile_error(name, stage, log, source));
+    if (ok != GL_TRUE) {
+        // Mesa also reports the failure through KHR_debug; the exception
+        // carries it, so the queued copy must not resurface at the next check.
+        take_debug_messages();
+        throw Error(format_compile_error(name, stage, log, source));
+    }
     set_object_label(GL_SHADER, id, name);
     return shader;
 }

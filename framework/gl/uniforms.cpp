@@ -121,6 +121,10 @@ std::string glsl_type_name(GLenum type) {
 GLint Program::checked_location(const std::string& name, GLenum given, GLsizei count) const {
     const UniformInfo* u = uniform(name);
     if (!u) throw_unknown(name);
+    // The common case first: every draw sets uniforms, so the checks must
+    // cost no more than the lookup. Messages are built only on failure.
+    if (count != 0 && accepts(u->type, given) && count <= u->array_size - u->first_element)
+        return u->location;
     const std::string declared =
         u->is_array ? array_type(u->type, u->array_size) : glsl_type_name(u->type);
     const std::string given_text = count < 0 ? glsl_type_name(given) : array_type(given, count);

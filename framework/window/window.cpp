@@ -165,10 +165,6 @@ std::vector<std::string> reload_shaders(ProgramLibrary& programs, const std::str
     if (errors.empty()) {
         std::printf("lab %s: shaders reloaded\n", id.c_str());
         std::fflush(stdout);
-    } else {
-        // Mesa also posts compile errors as KHR_debug messages; the compiler
-        // log above says all they say, and check_gl must not blame the draw.
-        take_debug_messages();
     }
     return errors;
 }

@@ -214,11 +214,16 @@ TEST_CASE("vertex array: indexed and flat storage draw the same image") {
 }
 
 TEST_CASE("shader: a compile error names the file, the stage, the line and quotes it") {
+    fw::enable_debug_output();  // as `lab` runs: GL's debug messages collected
     std::string msg = thrown([] {
         fw::Program::from_files({"tests/color.vert", "tests/broken.frag"});
     });
     check_mentions(msg, {"shaders/tests/broken.frag:9:", "fragment shader failed to compile",
                          "undeclared_colour", "  9 |     o_color = vec4(undeclared_colour, 1.0);"});
+
+    // The failure is reported once, by the exception: GL's own copy of it
+    // (KHR_debug) must not resurface as an error of the next draw.
+    CHECK_NOTHROW(fw::check_gl("after a failed compile"));
 
     check_mentions(thrown([] { fw::Shader::from_file("tests/does_not_exist.frag"); }),
                    {"cannot read shader file", "tests/does_not_exist.frag", fw::shader_dir()});
@@ -227,11 +232,13 @@ TEST_CASE("shader: a compile error names the file, the stage, the line and quote
 }
 
 TEST_CASE("program: a link error names the files and gives the linker's log") {
+    fw::enable_debug_output();
     std::string msg = thrown([] {
         fw::Program::from_files({"tests/mismatch.vert", "tests/mismatch.frag"});
     });
     check_mentions(msg,
                    {"failed to link", "tests/mismatch.vert", "tests/mismatch.frag", "v_value"});
+    CHECK_NOTHROW(fw::check_gl("after a failed link"));
 
     fw::Program ok = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});
     CHECK(ok.label() == "tests/color.vert + color.frag");
