@@ -2,10 +2,13 @@
 // every context (offscreen or windowed) passes before a lab may draw.
 #include "framework/context.hpp"
 
+#include <dlfcn.h>
 #include <glad/gl.h>
+#include <link.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "framework/backends/backends.hpp"
 #include "framework/error.hpp"
@@ -158,6 +161,21 @@ void load_gl_and_check(GLLoader loader, ContextInfo& info) {
             "provides it; try LIBGL_ALWAYS_SOFTWARE=1 or another --backend (osmesa, egl)" +
             backends::mesa_override_note());
     }
+}
+
+void keep_gl_drivers_loaded() {
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void*) {
+            const char* name = info->dlpi_name;
+            if (name && (std::strstr(name, "libEGL_") || std::strstr(name, "libGLX_") ||
+                         std::strstr(name, "_dri.so") || std::strstr(name, "libgallium") ||
+                         std::strstr(name, "libLLVM"))) {
+                // Takes a reference that is never dropped; the handle is not needed.
+                (void)dlopen(name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+            }
+            return 0;
+        },
+        nullptr);
 }
 
 }  // namespace fw

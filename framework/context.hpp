@@ -60,4 +60,12 @@ using GLProc = void (*)();
 using GLLoader = GLProc (*)(const char* name);
 void load_gl_and_check(GLLoader loader, ContextInfo& info);
 
+// Keeps the GL driver libraries that are loaded now (the vendor's EGL or GLX
+// library, Mesa's *_dri.so, LLVM) loaded until the process exits, instead of
+// being unloaded when the context is destroyed. A second context skips the
+// reload, and a leak checker can still name the driver behind an allocation
+// the driver never frees (Mesa's own leaks are suppressed by name in
+// scripts/lsan.supp; ours are not). Call it once a context is current.
+void keep_gl_drivers_loaded();
+
 }  // namespace fw

@@ -6,9 +6,6 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
-#include <dlfcn.h>
-#include <link.h>
-
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -16,6 +13,7 @@
 #include <vector>
 
 #include "framework/backends/backends.hpp"
+#include "framework/context.hpp"
 #include "framework/error.hpp"
 
 namespace fw::backends {
@@ -198,31 +196,14 @@ private:
     EGLContext context_ = EGL_NO_CONTEXT;
 };
 
-// eglInitialize loads the vendor's EGL library and its GL driver; eglTerminate
-// unloads them again. Pinning them (RTLD_NODELETE) keeps them for the life of
-// the process: a second context skips the reload, and a leak checker can still
-// name the driver behind an allocation the driver never frees.
-void pin_loaded_drivers() {
-    dl_iterate_phdr(
-        [](dl_phdr_info* info, size_t, void*) {
-            const char* name = info->dlpi_name;
-            if (name && (std::strstr(name, "libEGL_") || std::strstr(name, "_dri.so") ||
-                         std::strstr(name, "libgallium") || std::strstr(name, "libLLVM"))) {
-                // Takes a reference that is never dropped; the handle is not needed.
-                (void)dlopen(name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-            }
-            return 0;
-        },
-        nullptr);
-}
-
 std::unique_ptr<OffscreenContext> try_display(EGLDisplay display, const char* platform,
                                               const std::string& where) {
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display, &major, &minor)) {
         throw EnvironmentError(egl_failure("eglInitialize", where) + "; " + install_hint());
     }
-    pin_loaded_drivers();
+    // eglTerminate would unload the driver; see keep_gl_drivers_loaded().
+    keep_gl_drivers_loaded();
     auto context = std::make_unique<EglContext>(display, platform);
     context->set_up(where, major, minor);
     return context;

@@ -187,6 +187,7 @@ void run_window(const RegisteredLab& lab, ParamValues params, const WindowOption
     win::GlfwWindow window(id, window_title(lab.info), options.width, options.height);
     ContextInfo context{"glfw", "glx", "", "", ""};
     load_gl_and_check(glfwGetProcAddress, context);
+    keep_gl_drivers_loaded();
     enable_debug_output();
 
     InputState input;
