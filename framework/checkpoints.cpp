@@ -25,6 +25,8 @@ std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::st
     if (!doc.is_object() || !doc.contains("checkpoints") || !doc["checkpoints"].is_array())
         fail("expected an object with a \"checkpoints\" array");
 
+    if (doc.contains("lab") && doc["lab"] != lab.info.id)
+        fail("\"lab\" is " + doc["lab"].dump() + " but the file belongs to lab '" + lab.info.id + "'");
     std::vector<Checkpoint> out;
     std::set<std::string> names;
     for (const auto& item : doc["checkpoints"]) {
@@ -34,6 +36,11 @@ std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::st
         cp.name = item["name"].get<std::string>();
         std::string where = "checkpoint '" + cp.name + "': ";
         if (!names.insert(cp.name).second) fail(where + "the name is used twice");
+        // Names become file names (NAME.png) in renders and reports.
+        if (cp.name.empty() || cp.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
+                                                         "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
+                                   std::string::npos)
+            fail(where + "names may use only letters, digits, '_' and '-'");
         for (const auto& [key, value] : item.items())
             if (key != "name" && key != "visibility" && key != "description" && key != "params" &&
                 key != "checks")

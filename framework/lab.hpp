@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "framework/params.hpp"
+#include "framework/units.hpp"
 
 namespace fw {
 
@@ -29,6 +30,7 @@ struct LabInfo {
     std::string title;
     std::vector<Param> params;
     std::vector<std::string> controls;  // extra window controls, e.g. "drag: orbit the eye"
+    std::vector<UnitFunction> functions;  // student functions the grader evaluates (units.hpp)
 };
 
 // The lab's programs, loaded from files under shaders/. The library owns them

@@ -13,6 +13,7 @@
 #include "framework/image.hpp"
 #include "framework/lab.hpp"
 #include "framework/render.hpp"
+#include "framework/runner/grade_child.hpp"
 #if LAB_HAVE_WINDOW
 #include "framework/window/window.hpp"
 #endif
@@ -159,6 +160,14 @@ int main(int argc, char** argv) {
     render_cps->add_option("--out", rc_out, "Directory to write into (default ./renders)");
     render_cps->add_option("--backend", rc_backend, "auto|osmesa|egl (default $LAB_BACKEND or auto)");
 
+    std::string gc_job, gc_out, gc_backend;
+    auto* grade_child = app.add_subcommand(
+        "grade-child", "Used by 'course grade': render and evaluate what a job file lists");
+    grade_child->group("");  // not listed in --help: course's interface, not the user's
+    grade_child->add_option("--job", gc_job, "Job file (JSON)")->required();
+    grade_child->add_option("--out", gc_out, "Directory for the outputs")->required();
+    grade_child->add_option("--backend", gc_backend, "auto|osmesa|egl");
+
     std::string run_lab, run_size = "512x512";
     std::vector<std::string> run_sets;
     int run_frames = 0;
@@ -190,6 +199,7 @@ int main(int argc, char** argv) {
         if (*checkpoints) print_checkpoints(fw::find_lab(cp_lab), json_cp);
         if (*render_cmd) render(ra);
         if (*render_cps) render_checkpoints(rc_labs, rc_out, rc_backend);
+        if (*grade_child) fw::grade_child(gc_job, gc_out, gc_backend);
         if (*run) {
             const fw::RegisteredLab& lab = fw::find_lab(run_lab);
             fw::ParamValues params = resolve_params(lab, "", run_sets);

@@ -23,12 +23,7 @@ const std::vector<fw::Param>& sample_params() {
 
 template <class F>
 std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const fw::UsageError& e) {
-        return e.what();
-    }
-    return "(no UsageError thrown)";
+    return fw::test::thrown<fw::UsageError>(f);
 }
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }

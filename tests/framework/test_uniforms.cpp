@@ -14,22 +14,9 @@
 
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const fw::Error& e) {
-        return e.what();
-    }
-    FAIL_CHECK("expected fw::Error; nothing was thrown");
-    return {};
-}
+using fw::test::check_mentions;
 
-void check_mentions(const std::string& message, const std::vector<std::string>& needles) {
-    MESSAGE("observed message:\n" << message);
-    for (const std::string& n : needles)
-        CHECK_MESSAGE(message.find(n) != std::string::npos,
-                      "expected the message to contain '" << n << "'");
-}
+std::string error_of(const std::function<void()>& f) { return fw::test::thrown(f); }
 
 fw::Program uniforms_program() {
     return fw::Program::from_files({"tests/uniforms.vert", "tests/uniforms.frag"});

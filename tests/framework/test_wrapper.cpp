@@ -42,24 +42,8 @@ void clear_black() {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-// The message of the E that `f` throws; a failed check if it throws nothing.
-template <class E = fw::Error, class F>
-std::string thrown(F&& f) {
-    try {
-        f();
-    } catch (const E& e) {
-        return e.what();
-    }
-    FAIL_CHECK("expected an exception; none was thrown");
-    return {};
-}
-
-void check_mentions(const std::string& message, const std::vector<std::string>& needles) {
-    MESSAGE("observed message:\n" << message);
-    for (const std::string& n : needles)
-        CHECK_MESSAGE(message.find(n) != std::string::npos,
-                      "expected the message to contain '" << n << "'");
-}
+using fw::test::check_mentions;
+using fw::test::thrown;
 
 // Leaves no GL error or debug message behind for the next test.
 void drain_gl_errors() {

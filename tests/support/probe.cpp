@@ -58,6 +58,13 @@ bool probe_depth(const DepthImage& img, int x, int y, float expected, float tol)
     return pass;
 }
 
+void check_mentions(const std::string& message, const std::vector<std::string>& needles) {
+    MESSAGE("observed message:\n" << message);
+    for (const std::string& n : needles)
+        CHECK_MESSAGE(message.find(n) != std::string::npos,
+                      "expected the message to contain '" << n << "'");
+}
+
 CommandResult run_command(const std::string& command) {
     CommandResult r;
     std::string full = command + " 2>&1";

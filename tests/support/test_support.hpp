@@ -6,8 +6,10 @@
 
 #include <glm/glm.hpp>
 #include <string>
+#include <vector>
 
 #include "framework/context.hpp"
+#include "framework/error.hpp"
 #include "framework/image.hpp"
 
 namespace fw::test {
@@ -28,6 +30,22 @@ std::string source_dir();
 bool probe_rgb(const Image& img, int x, int y, glm::vec3 expected, float tol = 1.0f / 255.0f);
 // Depth probe, window-space depth in [0, 1].
 bool probe_depth(const DepthImage& img, int x, int y, float expected, float tol = 1e-5f);
+
+// The message of the E that `f` throws; a failed check if it throws nothing
+// (or something else, which then propagates).
+template <class E = fw::Error, class F>
+std::string thrown(F&& f) {
+    try {
+        f();
+    } catch (const E& e) {
+        return e.what();
+    }
+    FAIL_CHECK("expected an exception; none was thrown");
+    return {};
+}
+
+// Logs `message` and checks that it contains every one of `needles`.
+void check_mentions(const std::string& message, const std::vector<std::string>& needles);
 
 // Runs a command through /bin/sh, capturing stdout and stderr together.
 struct CommandResult {

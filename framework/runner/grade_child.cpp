@@ -1,0 +1,97 @@
+#include "framework/runner/grade_child.hpp"
+
+#include <fstream>
+#include <memory>
+
+#include "framework/error.hpp"
+#include "framework/image.hpp"
+#include "framework/lab.hpp"
+#include "framework/render.hpp"
+
+namespace fw {
+
+namespace {
+
+using nlohmann::json;
+
+void write_json(const std::string& path, const json& value) {
+    std::ofstream out(path);
+    if (!(out << value.dump(1) << "\n")) throw Error("cannot write '" + path + "'");
+}
+
+json read_job(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot read job file '" + path + "'");
+    try {
+        return json::parse(in);
+    } catch (const json::parse_error& e) {
+        throw Error("job file '" + path + "': " + e.what());
+    }
+}
+
+// One render: the checkpoint's parameters over the defaults, then the frame.
+void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job,
+                const std::string& base) {
+    ParamValues params = default_params(lab);
+    const json given = job.value("params", json::object());
+    for (const auto& [key, value] : given.items()) params.set_json(key, value);
+    RenderOutput out = renderer.render(params, job.value("width", 512), job.value("height", 512));
+    write_png(base + ".png", out.color);
+    write_pfm(base + ".pfm", out.depth);
+    write_json(base + ".stats.json", out.stats);
+}
+
+json call_unit(const RegisteredLab& lab, const json& call) {
+    std::string name = call.value("function", "");
+    for (const UnitFunction& f : lab.info.functions)
+        if (f.name == name) return {{"result", f.call(call.value("args", json::array()))}};
+    return {{"error", "lab '" + lab.info.id + "' has no unit function '" + name + "'"}};
+}
+
+}  // namespace
+
+void grade_child(const std::string& job_path, const std::string& out_dir, const std::string& backend) {
+    json job = read_job(job_path);
+    const RegisteredLab& lab = find_lab(job.value("lab", ""));
+
+    // Unit calls first: they need no context, so a broken shader costs them nothing.
+    json units = json::object();
+    const json calls = job.value("units", json::array());
+    for (const json& call : calls) {
+        std::string id = call.value("id", "");
+        try {
+            units[id] = call_unit(lab, call);
+        } catch (const std::exception& e) {
+            units[id] = {{"error", e.what()}};
+        }
+    }
+    write_json(out_dir + "/units.json", units);
+
+    json context_json = nullptr;
+    std::string init_error;
+    std::unique_ptr<OffscreenContext> context;
+    std::unique_ptr<LabRenderer> renderer;
+    try {
+        context = create_offscreen_context(backend.empty() ? backend_from_env() : parse_backend(backend));
+        const ContextInfo& info = context->info();
+        context_json = {{"backend", info.backend}, {"platform", info.platform},
+                        {"gl_version", info.gl_version}, {"gl_renderer", info.gl_renderer}};
+        renderer = std::make_unique<LabRenderer>(lab, info);
+    } catch (const Error& e) {
+        init_error = e.what();
+    }
+    const json renders = job.value("renders", json::array());
+    for (const json& r : renders) {
+        std::string base = out_dir + "/" + r.value("name", "unnamed");
+        try {
+            if (!renderer) throw Error(init_error);
+            render_one(*renderer, lab, r, base);
+        } catch (const std::exception& e) {
+            std::ofstream(base + ".error.txt") << e.what() << "\n";
+        }
+    }
+    write_json(out_dir + "/child.json", {{"complete", true}, {"context", context_json},
+                                         {"init_error", init_error}});
+}
+
+}  // namespace fw

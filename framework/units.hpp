@@ -1,0 +1,73 @@
+// Unit functions: the student functions of a lab (translate, lookAt, ...)
+// that the grader evaluates on inputs it chooses. A lab lists them in its
+// LabInfo; the `lab` child only calls them and reports what they return,
+// and `course` compares the results with its own reference (grading/units/).
+//
+//   info.functions = {
+//       fw::unit_function("translate", &transforms::translate),  // mat4 (vec3)
+//       fw::unit_function("rotate", &transforms::rotate),        // mat4 (float, vec3)
+//   };
+//
+// Arguments arrive as a JSON array, one element per parameter, and the result
+// goes back as JSON (json_glm.hpp). Supported types: float, int, bool, vecN,
+// matN and std::vector of those as results.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "framework/json_glm.hpp"
+
+namespace fw {
+
+template <class T>
+struct JsonValue<std::vector<T>> {
+    static nlohmann::json to(const std::vector<T>& v) {
+        nlohmann::json out = nlohmann::json::array();
+        for (const T& e : v) out.push_back(JsonValue<T>::to(e));
+        return out;
+    }
+    static std::vector<T> from(const nlohmann::json& j) {
+        if (!j.is_array()) throw Error("expected an array, got " + j.dump());
+        std::vector<T> out;
+        for (const auto& e : j) out.push_back(JsonValue<T>::from(e));
+        return out;
+    }
+};
+
+struct UnitFunction {
+    std::string name;
+    int arity = 0;
+    // Calls the function with `args` (a JSON array); throws Error when the
+    // arguments do not fit its parameters.
+    std::function<nlohmann::json(const nlohmann::json& args)> call;
+};
+
+namespace detail {
+template <class R, class... A, size_t... I>
+nlohmann::json call_with_json(R (*f)(A...), const nlohmann::json& args, std::index_sequence<I...>) {
+    return to_json_value<std::decay_t<R>>(f(from_json_value<std::decay_t<A>>(args[I])...));
+}
+}  // namespace detail
+
+template <class R, class... A>
+UnitFunction unit_function(std::string name, R (*f)(A...)) {
+    UnitFunction u;
+    u.name = name;
+    u.arity = static_cast<int>(sizeof...(A));
+    u.call = [f, name](const nlohmann::json& args) {
+        if (!args.is_array() || args.size() != sizeof...(A))
+            throw Error("unit function '" + name + "' takes " + std::to_string(sizeof...(A)) +
+                        " arguments, got " + args.dump());
+        return detail::call_with_json(f, args, std::index_sequence_for<A...>{});
+    };
+    return u;
+}
+
+}  // namespace fw
