@@ -97,7 +97,7 @@ TEST_CASE("keyboard steps") {
 }
 
 TEST_CASE("checkpoint files are validated against the declaration") {
-    fw::RegisteredLab lab{{0, "demo", "99_demo", "Demo", sample_params(), {}}, nullptr};
+    fw::RegisteredLab lab{{0, "demo", "99_demo", "Demo", sample_params(), {}, {}}, nullptr};
     std::string dir = fw::test::out_dir();
     auto write = [&](const std::string& text) {
         std::ofstream(dir + "/cp.json") << text;
