@@ -12,9 +12,9 @@ std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab) {
     return load_checkpoints(lab, lab_path(lab.info, "checkpoints.json"));
 }
 
-std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::string& path) {
+CheckpointFile read_checkpoint_file(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw Error("cannot read checkpoints file '" + path + "' of lab '" + lab.info.id + "'");
+    if (!in) throw Error("cannot read checkpoints file '" + path + "'");
     nlohmann::json doc;
     try {
         doc = nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true);
@@ -24,10 +24,12 @@ std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::st
     auto fail = [&](const std::string& what) { throw Error(path + ": " + what); };
     if (!doc.is_object() || !doc.contains("checkpoints") || !doc["checkpoints"].is_array())
         fail("expected an object with a \"checkpoints\" array");
+    if (!doc.contains("lab") || !doc["lab"].is_string())
+        fail("expected \"lab\": the lab's name, e.g. \"pipeline\"");
 
-    if (doc.contains("lab") && doc["lab"] != lab.info.id)
-        fail("\"lab\" is " + doc["lab"].dump() + " but the file belongs to lab '" + lab.info.id + "'");
-    std::vector<Checkpoint> out;
+    CheckpointFile file;
+    file.path = path;
+    file.lab = doc["lab"].get<std::string>();
     std::set<std::string> names;
     for (const auto& item : doc["checkpoints"]) {
         Checkpoint cp;
@@ -58,14 +60,24 @@ std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::st
             if (!item["checks"].is_array()) fail(where + "\"checks\" must be an array");
             cp.checks = item["checks"];
         }
+        file.checkpoints.push_back(std::move(cp));
+    }
+    return file;
+}
+
+std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::string& path) {
+    CheckpointFile file = read_checkpoint_file(path);
+    if (file.lab != lab.info.id)
+        throw Error(path + ": \"lab\" is \"" + file.lab + "\" but the file belongs to lab '" +
+                    lab.info.id + "'");
+    for (const Checkpoint& cp : file.checkpoints) {
         try {
             checkpoint_params(lab, cp);
         } catch (const Error& e) {
-            fail(where + e.what());
+            throw Error(path + ": checkpoint '" + cp.name + "': " + e.what());
         }
-        out.push_back(std::move(cp));
     }
-    return out;
+    return file.checkpoints;
 }
 
 const Checkpoint& find_checkpoint(const std::vector<Checkpoint>& all, const std::string& name,

@@ -3,7 +3,7 @@
 // comments allowed). `lab` only reads names and parameters; `course` alone
 // reads the checks and decides pass or fail.
 //
-//   {"checkpoints": [
+//   {"lab": "pipeline", "checkpoints": [
 //     {"name": "order_depth", "visibility": "visible",
 //      "params": {"scene": "order", "depth_test": true},
 //      "checks": [{"kind": "image", "points": 2},
@@ -27,6 +27,16 @@ struct Checkpoint {
     nlohmann::json params = nlohmann::json::object();  // name -> value, as written
     nlohmann::json checks = nlohmann::json::array();   // raw; interpreted by `course`
 };
+
+struct CheckpointFile {
+    std::string path;
+    std::string lab;  // "lab": the lab's name
+    std::vector<Checkpoint> checkpoints;
+};
+
+// Reads the file and checks its structure (fields, names, visibility) without
+// the lab's declaration; `course`, which never links lab code, reads it so.
+CheckpointFile read_checkpoint_file(const std::string& path);
 
 // Reads and validates the lab's checkpoints file: every parameter name and
 // value is checked against the lab's declaration, names must be unique.

@@ -79,6 +79,17 @@ void set_culling(const std::string& cull) {
     // END SOLUTION
 }
 
+// Unit check `expand_quad` (checkpoints.json): the quad a b c d as the
+// triangles (a, b, c) and (a, c, d), 4 vertices and 6 indices that
+// expand_indices() turns into 6 positions; course compares them with its own.
+std::vector<glm::vec3> expand_quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    std::vector<Vertex> vertices;
+    for (const glm::vec3& p : {a, b, c, d}) vertices.push_back({p, glm::vec3(0.0f)});
+    std::vector<glm::vec3> positions;
+    for (const Vertex& v : expand_indices(vertices, {0, 1, 2, 0, 2, 3})) positions.push_back(v.position);
+    return positions;
+}
+
 float wrap_degrees(float a) {
     while (a > 180.0f) a -= 360.0f;
     while (a < -180.0f) a += 360.0f;
@@ -132,6 +143,7 @@ public:
                 .key('X'),
         };
         i.controls = {"drag: rotate the cube (yaw, pitch) in scene culling"};
+        i.functions = {fw::unit_function("expand_quad", &expand_quad)};
         return i;
     }
 

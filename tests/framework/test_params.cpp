@@ -105,6 +105,7 @@ TEST_CASE("checkpoint files are validated against the declaration") {
     };
     auto good = fw::load_checkpoints(lab, write(R"({
         // comments are allowed
+        "lab": "demo",
         "checkpoints": [
           {"name": "a", "params": {"fov": 30, "scene": "zfight", "wireframe": false}},
           {"name": "b", "visibility": "hidden", "checks": [{"kind": "image"}]}
@@ -124,11 +125,14 @@ TEST_CASE("checkpoint files are validated against the declaration") {
         }
         return std::string("(no error)");
     };
-    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a", "params": {"fov": 1}}]})"), "checkpoint 'a'"));
-    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a", "params": {"zoom": 1}}]})"), "no parameter 'zoom'"));
-    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a"}, {"name": "a"}]})"), "used twice"));
-    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a", "visibility": "secret"}]})"), "visibility"));
-    CHECK(contains(error_for(R"({"checkpoints": [{"name": "a", "param": {}}]})"), "unknown field \"param\""));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "params": {"fov": 1}}]})"), "checkpoint 'a'"));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "params": {"zoom": 1}}]})"), "no parameter 'zoom'"));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a"}, {"name": "a"}]})"), "used twice"));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "visibility": "secret"}]})"), "visibility"));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "param": {}}]})"), "unknown field \"param\""));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a b"}]})"), "letters, digits"));
+    CHECK(contains(error_for(R"({"lab": "other", "checkpoints": []})"), "belongs to lab 'demo'"));
+    CHECK(contains(error_for(R"({"checkpoints": []})"), "\"lab\""));
     CHECK(contains(error_for(R"({"checkpoints": [)"), dir + "/cp.json"));
     CHECK(contains(error_for(R"({"checkpoints": [)"), "not valid JSON"));
     CHECK_THROWS_WITH_AS(fw::load_checkpoints(lab, dir + "/missing.json"),

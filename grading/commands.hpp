@@ -1,0 +1,37 @@
+// The `course` subcommands (SPEC.md, `course`). Each returns the process exit
+// status: 0 success (for grade: every check passed), 1 a check failed,
+// 2 a usage or set-up error.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace grading {
+
+// The repository whose labs/ (checkpoints, references) `course` reads: $LAB_ROOT
+// if set, else the source tree it was built from.
+std::string source_root();
+
+struct GradeOptions {
+    std::vector<std::string> labs;  // empty: every lab with a labs/NN_name/checkpoints.json
+    std::string lab_binary;         // --lab PATH; default: `lab` beside `course`
+    std::string out = "build/grade";
+    std::string backend;            // empty: $LAB_BACKEND or auto, decided by the child
+    int jobs = 1;
+    double timeout_seconds = 60.0;
+    std::string run_as;             // --run-as USER (root only)
+    bool progress = true;           // a line per lab as it finishes
+};
+int grade_command(const GradeOptions& options);
+
+struct BlessOptions {
+    std::vector<std::string> labs;  // empty: all
+    std::string lab_binary;
+    std::string backend = "osmesa";  // references are blessed on OSMesa
+};
+int bless_command(const BlessOptions& options);
+
+int release_command(const std::string& out_dir);
+int gradescope_command(const std::string& out_dir);
+
+}  // namespace grading

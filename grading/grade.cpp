@@ -1,0 +1,211 @@
+// `course grade` (SPEC.md, `course`): one `lab grade-child` per lab, judged
+// by course from the child's raw outputs, then the reports.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <set>
+#include <thread>
+
+#include "framework/error.hpp"
+#include "grading/checks.hpp"
+#include "grading/commands.hpp"
+#include "grading/reports.hpp"
+
+namespace grading {
+
+namespace fs = std::filesystem;
+
+std::string source_root() {
+    const char* root = std::getenv("LAB_ROOT");
+    return root && *root ? root : LAB_SOURCE_DIR;
+}
+
+std::vector<LabData> discover_labs(const std::string& root) {
+    const fs::path labs_dir = fs::path(root) / "labs";
+    if (!fs::is_directory(labs_dir))
+        throw fw::UsageError("no labs/ folder in '" + root +
+                             "'; set LAB_ROOT to the repository that holds labs/NN_name/checkpoints.json");
+    std::set<std::string> folders;
+    for (const fs::directory_entry& e : fs::directory_iterator(labs_dir))
+        if (e.is_directory() && fs::exists(e.path() / "checkpoints.json"))
+            folders.insert(e.path().filename().string());
+    std::vector<LabData> labs;
+    for (const std::string& folder : folders) {
+        LabData lab;
+        lab.root = root;
+        lab.dir = folder;
+        lab.file = fw::read_checkpoint_file((labs_dir / folder / "checkpoints.json").string());
+        lab.id = lab.file.lab;
+        for (const LabData& other : labs)
+            if (other.id == lab.id)
+                throw fw::UsageError(lab.file.path + ": \"lab\" is \"" + lab.id + "\", as in " +
+                                     other.file.path + "; each lab needs its own name");
+        labs.push_back(std::move(lab));
+    }
+    return labs;
+}
+
+std::vector<LabData> select_labs(const std::vector<LabData>& all, const std::vector<std::string>& names) {
+    if (names.empty()) return all;
+    std::string known;
+    for (const LabData& lab : all) known += (known.empty() ? "" : ", ") + lab.id;
+    std::set<std::string> wanted;
+    for (const std::string& name : names) {
+        bool found = false;
+        for (const LabData& lab : all) found = found || lab.id == name || lab.dir == name;
+        if (!found)
+            throw fw::UsageError("unknown lab '" + name + "'; the labs are: " + (known.empty() ? "(none)" : known));
+        wanted.insert(name);
+    }
+    std::vector<LabData> out;
+    for (const LabData& lab : all)
+        if (wanted.count(lab.id) || wanted.count(lab.dir)) out.push_back(lab);
+    return out;
+}
+
+std::string resolve_lab_binary(const std::string& given) {
+    std::string path = given;
+    if (path.empty()) {
+        std::error_code ec;
+        const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+        if (ec) throw fw::UsageError("cannot find course's own directory (/proc/self/exe): pass --lab PATH");
+        path = (self.parent_path() / "lab").string();
+    }
+    const std::string abs = fs::absolute(path).string();
+    if (!fs::exists(abs))
+        throw fw::UsageError("no lab executable at '" + abs +
+                             "'; build it (cmake --build build --target lab) or pass --lab PATH");
+    if (!fs::is_regular_file(abs) || access(abs.c_str(), X_OK) != 0)
+        throw fw::UsageError("'" + abs + "' is not an executable file; pass --lab with the `lab` executable");
+    return abs;
+}
+
+namespace {
+
+unsigned seed_from_env() {
+    const char* text = std::getenv("COURSE_SEED");
+    if (!text || !*text) return std::random_device{}();
+    char* end = nullptr;
+    const unsigned long v = std::strtoul(text, &end, 10);
+    if (*end != '\0' || v > 0xffffffffUL)
+        throw fw::UsageError("COURSE_SEED='" + std::string(text) + "' is not a number from 0 to 4294967295");
+    return static_cast<unsigned>(v);
+}
+
+void set_owner_mode(const std::string& path, mode_t mode) {
+    if (chown(path.c_str(), 0, 0) != 0 || chmod(path.c_str(), mode) != 0)
+        throw fw::Error("cannot make '" + path + "' root's with mode " + std::to_string(mode) + ": " +
+                        std::strerror(errno));
+}
+
+// The output directory and its per-lab image folders. With --run-as, the
+// child's user must neither read a reference nor write a result: course
+// makes every labs/*/reference folder (course's own tree) root's with mode
+// 0700, the output directory root's 0755 and the image folders, which hold
+// copies of references, 0700; then checks all that as the user.
+void prepare(const std::string& out, const std::vector<LabData>& all, const std::vector<LabData>& graded,
+             const std::string& lab_binary, const RunAsUser* user) {
+    const bool created = !fs::exists(out);
+    fs::create_directories(out);
+    if (user && created) set_owner_mode(out, 0755);
+    for (const LabData& lab : graded) {
+        const std::string dir = out + "/" + lab.id;
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        if (user) set_owner_mode(dir, 0700);
+    }
+    if (!user) return;
+    for (const LabData& lab : all)
+        if (fs::exists(lab.reference_dir())) set_owner_mode(lab.reference_dir(), 0700);
+    auto deny = [&](const std::string& what) {
+        throw fw::UsageError("--run-as " + user->name + ": that user " + what);
+    };
+    if (user_can_access(*user, out, W_OK))
+        deny("could write the output directory '" + out + "'; choose an --out it cannot write");
+    for (const LabData& lab : all)
+        if (fs::exists(lab.reference_dir()) && user_can_access(*user, lab.reference_dir(), R_OK))
+            deny("could still read '" + lab.reference_dir() + "'");
+    if (!user_can_access(*user, lab_binary, X_OK))
+        deny("cannot run '" + lab_binary + "'; put the build where that user can read and execute it");
+}
+
+std::string score_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+}  // namespace
+
+int grade_command(const GradeOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<LabData> all = discover_labs(source_root());
+    const std::vector<LabData> labs = select_labs(all, options.labs);
+    for (const LabData& lab : labs) validate_checks(lab);
+    const std::string lab_binary = resolve_lab_binary(options.lab_binary);
+    std::optional<RunAsUser> user;
+    if (!options.run_as.empty()) user = lookup_user(options.run_as);
+    const RunAsUser* as = user ? &*user : nullptr;
+    prepare(options.out, all, labs, lab_binary, as);
+
+    const unsigned seed = seed_from_env();
+    std::vector<LabPlan> plans;
+    for (const LabData& lab : labs) plans.push_back(plan_lab(lab, seed, PlanFor::Grading));
+    ChildLimits limits;
+    limits.timeout_seconds = options.timeout_seconds;
+
+    GradeRun run;
+    const char* env_backend = std::getenv("LAB_BACKEND");
+    run.backend = !options.backend.empty() ? options.backend : env_backend && *env_backend ? env_backend : "auto";
+    run.labs.resize(labs.size());
+
+    // --jobs workers take labs in order; each lab is one child.
+    std::atomic<size_t> next{0};
+    std::mutex print_mutex;
+    std::exception_ptr failure;
+    auto worker = [&] {
+        for (size_t i; (i = next++) < labs.size();) {
+            try {
+                LabChild child = run_lab_child(lab_binary, plans[i].job, options.backend, limits, as);
+                LabResult& result = run.labs[i];
+                result.lab = labs[i].id;
+                result.status = child.run.status;
+                result.log = child.run.log;
+                result.seconds = child.run.seconds;
+                result.checks = judge_lab(labs[i], plans[i], *child.outputs, options.out);
+                if (!options.progress) continue;
+                std::lock_guard<std::mutex> lock(print_mutex);
+                std::printf("%-16s %6s/%-6s %s  %.1f s\n", result.lab.c_str(), score_text(result.score()).c_str(),
+                            score_text(result.max_score()).c_str(), result.status.c_str(), result.seconds);
+                if (!child.run.ok()) std::printf("%s", indented_tail(result.log, 12).c_str());
+                std::fflush(stdout);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(print_mutex);
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> workers;
+    const size_t n = std::min<size_t>(static_cast<size_t>(std::max(1, options.jobs)), labs.size());
+    for (size_t i = 0; i < n; ++i) workers.emplace_back(worker);
+    for (std::thread& t : workers) t.join();
+    if (failure) std::rethrow_exception(failure);
+
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    write_reports(run, options.out);
+    std::printf("%s", summary_table(run).c_str());
+    return run.passed() ? 0 : 1;
+}
+
+}  // namespace grading

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Gradescope runs this once, as root, in /autograder/source, when it builds
+# the autograder's image (`course gradescope` put it at the top of the folder).
+# It installs the packages, builds `lab` and `course`, and creates the
+# unprivileged user that submitted code runs as (`course grade --run-as`).
+#
+#   AUTOGRADER_USER=student   that user (created when missing)
+#   SKIP_APT=1                the packages are present: configure and build only
+set -euo pipefail
+
+source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+user=${AUTOGRADER_USER:-student}
+cd "$source_dir"
+
+# The project's own set-up installs the missing Debian packages and builds.
+# Submissions are built without -Werror: a student's warning is not a failure.
+if [ "${SKIP_APT:-0}" != 1 ]; then
+  env -u CI LAB_PRESET=default bash scripts/setup.sh
+fi
+cmake --preset default -DLAB_WERROR=OFF >/dev/null
+cmake --build --preset default -j "$(nproc)" --target lab course
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "setup.sh: not root: no user '$user' and no permissions set; submitted code will run as $(id -un)"
+  exit 0
+fi
+if ! id -u "$user" >/dev/null 2>&1; then
+  useradd --system --no-create-home --shell /usr/sbin/nologin "$user"
+fi
+# The user may read and run the build, and nothing more: it writes nothing of
+# the autograder's, and reads neither references nor checkpoint files (hidden
+# checkpoints are the course's). `course grade` checks this before it grades.
+chown -R root:root "$source_dir"
+chmod -R go-w "$source_dir"
+for lab in "$source_dir"/labs/*/; do
+  if [ -d "$lab/reference" ]; then chmod 0700 "$lab/reference"; fi
+  if [ -f "$lab/checkpoints.json" ]; then chmod 0600 "$lab/checkpoints.json"; fi
+done
+echo "setup.sh: built $source_dir/build; submitted code will run as '$user'"

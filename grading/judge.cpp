@@ -1,0 +1,382 @@
+// Judging a lab's checks from what its child wrote. Only raw outputs count:
+// pixels, depth values, stats numbers and unit results; whatever else the
+// child claims (its stats' "params", extra fields, child.json) is ignored.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <optional>
+
+#include "framework/error.hpp"
+#include "grading/checks.hpp"
+#include "grading/units/reference.hpp"
+
+namespace grading {
+
+namespace {
+
+using nlohmann::json;
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.7g", v);
+    return buf;
+}
+
+// JSON with numbers at float precision, cut to `max` characters.
+std::string compact(const json& j, size_t max = 240) {
+    std::string s;
+    if (j.is_array()) {
+        s = "[";
+        for (size_t i = 0; i < j.size() && s.size() <= max; ++i) s += (i ? ", " : "") + compact(j[i], max);
+        s += "]";
+    } else {
+        s = j.is_number_float() ? num(j.get<double>()) : j.dump();
+    }
+    return s.size() > max ? s.substr(0, max) + "..." : s;
+}
+
+std::string tuple(const std::vector<double>& v) {
+    std::string s = "(";
+    for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + num(v[i]);
+    return s + ")";
+}
+
+// Shown when a file does not start like a PNG: its first bytes, escaped.
+std::string first_bytes(const std::string& bytes) {
+    std::string s;
+    for (size_t i = 0; i < bytes.size() && i < 16; ++i) {
+        unsigned char c = static_cast<unsigned char>(bytes[i]);
+        char buf[8];
+        std::snprintf(buf, sizeof buf, c >= 32 && c < 127 && c != '"' ? "%c" : "\\x%02x", c);
+        s += buf;
+    }
+    return "\"" + s + "\"";
+}
+
+std::uint32_t be32(const std::string& b, size_t at) {
+    std::uint32_t v = 0;
+    for (size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(b[at + i]);
+    return v;
+}
+
+// One checkpoint's frame, each output read once for all its checks.
+class Frame {
+public:
+    Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& out_dir,
+          const std::string& lab)
+        : outputs_(outputs), plan_(plan) {
+        has_color_ = read_rendered(outputs, plan, color_, color_why_);
+        if (has_color_) {
+            rendered_ = lab + "/" + plan.checkpoint + ".png";
+            fw::write_png(out_dir + "/" + rendered_, color_);  // re-encoded: course writes only what it decoded
+        }
+    }
+    const std::string& rendered() const { return rendered_; }
+
+    const fw::Image* color(std::string& why) const {
+        why = "no image: " + color_why_;
+        return has_color_ ? &color_ : nullptr;
+    }
+
+    const fw::DepthImage* depth(std::string& why) {
+        if (!depth_) {
+            depth_.emplace();
+            const std::string name = plan_.checkpoint + ".pfm";
+            std::string bytes;
+            const std::uint64_t limit = std::uint64_t(plan_.width) * plan_.height * 4 + 1024;
+            if (!outputs_.read(name, limit, bytes, depth_why_)) {
+                depth_.reset();
+                depth_why_ = "no depth: " + depth_why_;
+                depth_failed_ = true;
+            } else {
+                try {
+                    *depth_ = fw::read_pfm(outputs_.path(name));
+                    if (depth_->width != plan_.width || depth_->height != plan_.height)
+                        throw fw::Error(name + " is " + std::to_string(depth_->width) + "x" +
+                                        std::to_string(depth_->height) + ", not the frame's size");
+                } catch (const fw::Error& e) {
+                    depth_.reset();
+                    depth_why_ = "no depth: " + std::string(e.what());
+                    depth_failed_ = true;
+                }
+            }
+        }
+        why = depth_why_;
+        return depth_failed_ ? nullptr : &*depth_;
+    }
+
+    const json* stats(std::string& why) {
+        if (!stats_tried_) {
+            stats_tried_ = true;
+            const std::string name = plan_.checkpoint + ".stats.json";
+            std::string bytes;
+            if (!outputs_.read(name, 1 * kMiB, bytes, stats_why_)) {
+                stats_why_ = "no stats: " + stats_why_;
+            } else {
+                stats_ = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+                if (!stats_.is_object()) stats_why_ = "no stats: " + name + " is not a JSON object";
+            }
+        }
+        why = stats_why_;
+        return stats_.is_object() ? &stats_ : nullptr;
+    }
+
+private:
+    const ChildOutputs& outputs_;
+    RenderPlan plan_;
+    bool has_color_ = false;
+    fw::Image color_;
+    std::string color_why_, rendered_;
+    std::optional<fw::DepthImage> depth_;
+    bool depth_failed_ = false;
+    std::string depth_why_;
+    bool stats_tried_ = false;
+    json stats_;
+    std::string stats_why_;
+};
+
+void verdict(CheckResult& r, bool pass, const std::string& output) {
+    r.passed = pass;
+    r.score = pass ? r.max_score : 0.0;
+    r.output = output;
+}
+
+void judge_image(const LabData& lab, const fw::Checkpoint& cp, const json& check, Frame& frame,
+                 const std::string& out_dir, CheckResult& r) {
+    r.title = "image vs reference";
+    fw::CompareOptions opt;
+    opt.tolerance = check.value("tolerance", 8);
+    opt.radius = check.value("radius", 1);
+    opt.max_failed_fraction = check.value("max_fail_fraction", 0.001);
+    const int side = 2 * opt.radius + 1;
+    const std::string expected = "Expected: " + lab.reference(cp.name) + "; a pixel passes when a reference pixel in its " +
+                                 std::to_string(side) + "x" + std::to_string(side) + " neighbourhood is within " +
+                                 std::to_string(opt.tolerance) + "/255 on every channel; at most " +
+                                 num(opt.max_failed_fraction * 100) + "% of pixels may fail\n";
+    std::string why;
+    const fw::Image* image = frame.color(why);
+    r.rendered = frame.rendered();
+    if (!image) return verdict(r, false, expected + "Observed: " + why);
+    const std::string ref_path = lab.root + "/" + lab.reference(cp.name);
+    if (!std::filesystem::exists(ref_path))
+        return verdict(r, false, "missing reference " + lab.reference(cp.name) + "; run course bless");
+    fw::Image reference;
+    try {
+        reference = fw::read_png(ref_path);
+    } catch (const fw::Error& e) {
+        return verdict(r, false, std::string(e.what()) + "; run course bless to write it again");
+    }
+    fw::CompareResult c = fw::compare_images(*image, reference, opt);
+    r.expected = lab.id + "/" + cp.name + ".expected.png";
+    fw::write_png(out_dir + "/" + r.expected, reference);
+    if (!c.size_mismatch) {
+        r.difference = lab.id + "/" + cp.name + ".diff.png";
+        fw::write_png(out_dir + "/" + r.difference, c.difference);
+    }
+    verdict(r, c.passed, expected + "Observed: " + c.summary());
+}
+
+void judge_probe(const json& check, const RenderPlan& plan, Frame& frame, CheckResult& r) {
+    int x, y;
+    std::string where;
+    if (check.contains("at")) {
+        x = check["at"][0];
+        y = check["at"][1];
+    } else {
+        // The pixel whose square holds the point: NDC -1..1 covers 0..width.
+        const double nx = check["ndc"][0], ny = check["ndc"][1];
+        x = std::min(plan.width - 1, static_cast<int>(std::floor((nx + 1) / 2 * plan.width)));
+        y = std::min(plan.height - 1, static_cast<int>(std::floor((ny + 1) / 2 * plan.height)));
+        where = " (NDC " + tuple({nx, ny}) + ")";
+    }
+    const std::string pixel = "(" + std::to_string(x) + ", " + std::to_string(y) + ")";
+    std::string why;
+    if (check.contains("color")) {
+        r.title = "probe " + pixel + " colour";
+        const std::vector<double> expected = check["color"];
+        const double tol = check.value("tolerance", 0.01);
+        const std::string want = "Expected: colour " + tuple(expected) + " within " + num(tol) +
+                                 " per channel at pixel " + pixel + where + "\n";
+        const fw::Image* image = frame.color(why);
+        r.rendered = frame.rendered();
+        if (!image) return verdict(r, false, want + "Observed: " + why);
+        if (x >= image->width || y >= image->height) return verdict(r, false, want + "Observed: outside the image");
+        const fw::Rgba8 p = image->at(x, y);
+        const double channels[4] = {p.r / 255.0, p.g / 255.0, p.b / 255.0, p.a / 255.0};
+        std::vector<double> seen(channels, channels + expected.size());
+        double worst = 0.0;
+        for (size_t i = 0; i < expected.size(); ++i) worst = std::max(worst, std::fabs(seen[i] - expected[i]));
+        return verdict(r, worst <= tol,
+                       want + "Observed: " + tuple(seen) + ", largest difference " + num(worst));
+    }
+    r.title = "probe " + pixel + " depth";
+    const double expected = check["depth"], tol = check.value("tolerance", 1e-5);
+    const std::string want = "Expected: depth " + num(expected) + " within " + num(tol) + " at pixel " + pixel + where + "\n";
+    const fw::DepthImage* depth = frame.depth(why);
+    if (!depth) return verdict(r, false, want + "Observed: " + why);
+    const double seen = depth->at(x, y);
+    verdict(r, std::fabs(seen - expected) <= tol,
+            want + "Observed: depth " + num(seen) + ", difference " + num(std::fabs(seen - expected)));
+}
+
+void judge_stat(const json& check, Frame& frame, CheckResult& r) {
+    const std::string path = check["stat"];
+    std::string want;
+    if (check.contains("equals")) {
+        want = path + " == " + compact(check["equals"]);
+        if (check.contains("tolerance")) want += " within " + num(check["tolerance"]);
+    } else if (check.contains("min") && check.contains("max")) {
+        want = path + " in [" + num(check["min"]) + ", " + num(check["max"]) + "]";
+    } else {
+        want = path + (check.contains("min") ? " >= " + num(check["min"]) : " <= " + num(check["max"]));
+    }
+    r.title = "stat " + want;
+    want = "Expected: " + want + "\n";
+    std::string why;
+    const json* stats = frame.stats(why);
+    if (!stats) return verdict(r, false, want + "Observed: " + why);
+    const json* value = stats;
+    for (size_t start = 0; value && start <= path.size();) {
+        size_t dot = std::min(path.find('.', start), path.size());
+        const std::string key = path.substr(start, dot - start);
+        value = value->is_object() && value->contains(key) ? &(*value)[key] : nullptr;
+        start = dot + 1;
+    }
+    if (!value) return verdict(r, false, want + "Observed: the frame's stats have no " + path);
+    const std::string seen = "Observed: " + path + " = " + compact(*value);
+    if (check.contains("equals")) {
+        const json& e = check["equals"];
+        if (!e.is_number()) return verdict(r, *value == e, want + seen);
+        if (!value->is_number()) return verdict(r, false, want + seen + " (not a number)");
+        const double diff = std::fabs(value->get<double>() - e.get<double>());
+        return verdict(r, diff <= check.value("tolerance", 0.0), want + seen);
+    }
+    if (!value->is_number()) return verdict(r, false, want + seen + " (not a number)");
+    const double v = value->get<double>();
+    const bool pass = (!check.contains("min") || v >= check["min"].get<double>()) &&
+                      (!check.contains("max") || v <= check["max"].get<double>());
+    verdict(r, pass, want + seen);
+}
+
+void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, unsigned seed,
+                const json* units, const std::string& units_why, CheckResult& r) {
+    const ReferenceUnit& ref = find_reference(lab.id, check["function"]);
+    const double tol = check.value("tolerance", ref.tolerance);
+    size_t edges = 0;
+    for (const UnitCase& c : plan.cases) edges += c.edge ? 1 : 0;
+    r.title = "unit " + ref.function.name + " (" + std::to_string(plan.cases.size()) + " cases)";
+    std::string head = "seed " + std::to_string(seed) + " (COURSE_SEED=" + std::to_string(seed) +
+                       " repeats these cases): " + std::to_string(plan.cases.size() - edges) + " random and " +
+                       std::to_string(edges) + " edge cases; tolerance " + num(tol) +
+                       " (relative where |expected| > 1)\nExpected: every case equal to course's reference\n";
+    if (!units) return verdict(r, false, head + "Observed: no results: " + units_why);
+    size_t passed = 0;
+    std::string failures;
+    int shown = 0;
+    for (const UnitCase& c : plan.cases) {
+        std::string why;
+        json expected;
+        bool ok = false;
+        const json entry = units->contains(c.id) ? (*units)[c.id] : json();
+        try {
+            expected = ref.function.call(c.args);
+        } catch (const std::exception& e) {
+            why = std::string("course's reference failed: ") + e.what();
+        }
+        if (!why.empty()) {
+        } else if (!entry.is_object() || (!entry.contains("result") && !entry.contains("error"))) {
+            why = "no result for this case in units.json";
+        } else if (entry.contains("error")) {
+            why = "the function failed: " + (entry["error"].is_string() ? entry["error"].get<std::string>()
+                                                                        : entry["error"].dump());
+        } else {
+            ok = results_match(expected, entry["result"], tol, &why);
+        }
+        if (ok) {
+            ++passed;
+        } else if (shown++ < 3) {
+            std::string args;
+            for (const json& a : c.args) args += (args.empty() ? "" : ", ") + compact(a, 120);
+            failures += "  " + ref.function.name + "(" + args + ")" + (c.edge ? " [edge case]" : "") +
+                        "\n    expected " + compact(expected) +
+                        "\n    observed " + (entry.contains("result") ? compact(entry["result"]) : "-") +
+                        "\n    " + why + "\n";
+        }
+    }
+    std::string out = head + "Observed: " + std::to_string(passed) + " of " + std::to_string(plan.cases.size()) +
+                      " cases passed";
+    if (!failures.empty()) out += "\nFirst failures:\n" + failures;
+    verdict(r, passed == plan.cases.size(), out);
+}
+
+}  // namespace
+
+bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Image& image,
+                   std::string& why) {
+    const std::string name = render.checkpoint + ".png";
+    // An uncompressed PNG: 4 bytes a pixel, a filter byte a row, chunk overhead.
+    const std::uint64_t limit = std::uint64_t(render.width) * render.height * 4 + render.height + kMiB;
+    std::string bytes;
+    if (!outputs.read(name, limit, bytes, why)) return false;
+    static const std::string signature = "\x89PNG\r\n\x1a\n";
+    if (bytes.size() < 24 || bytes.compare(0, 8, signature) != 0) {
+        why = name + " is not a PNG: it starts with " + first_bytes(bytes);
+        return false;
+    }
+    // The size in the header, checked before decoding anything.
+    const std::uint32_t w = be32(bytes, 16), h = be32(bytes, 20);
+    if (w != std::uint32_t(render.width) || h != std::uint32_t(render.height)) {
+        why = name + " is " + std::to_string(w) + "x" + std::to_string(h) + ", but course asked for " +
+              std::to_string(render.width) + "x" + std::to_string(render.height);
+        return false;
+    }
+    try {
+        image = fw::read_png(outputs.path(name));
+    } catch (const fw::Error& e) {
+        why = name + " is not a PNG: " + e.what();
+        return false;
+    }
+    return true;
+}
+
+std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
+                                   const ChildOutputs& outputs, const std::string& out_dir) {
+    std::map<std::string, const RenderPlan*> renders;
+    for (const RenderPlan& r : plan.renders) renders[r.checkpoint] = &r;
+    std::string units_why;
+    json units;
+    if (!plan.units.empty()) {
+        std::string bytes;
+        if (!outputs.read("units.json", 16 * kMiB, bytes, units_why)) {
+        } else if (!(units = json::parse(bytes, nullptr, false)).is_object()) {
+            units_why = "units.json is not a JSON object";
+        }
+    }
+    std::vector<CheckResult> results;
+    for (const fw::Checkpoint& cp : lab.file.checkpoints) {
+        std::optional<Frame> frame;
+        auto r = renders.find(cp.name);
+        if (r != renders.end()) frame.emplace(outputs, *r->second, out_dir, lab.id);
+        for (size_t i = 0; i < cp.checks.size(); ++i) {
+            const json& check = cp.checks[i];
+            CheckResult result;
+            result.lab = lab.id;
+            result.checkpoint = cp.name;
+            result.kind = check["kind"];
+            result.visibility = cp.visibility;
+            result.max_score = check["points"];
+            if (result.kind == "image") judge_image(lab, cp, check, *frame, out_dir, result);
+            if (result.kind == "probe") judge_probe(check, *r->second, *frame, result);
+            if (result.kind == "stat") judge_stat(check, *frame, result);
+            if (result.kind == "unit")
+                for (const UnitPlan& u : plan.units)
+                    if (u.checkpoint == cp.name && u.check == i)
+                        judge_unit(lab, check, u, plan.seed, units.is_object() ? &units : nullptr, units_why, result);
+            results.push_back(std::move(result));
+        }
+    }
+    return results;
+}
+
+}  // namespace grading

@@ -1,0 +1,210 @@
+// `course release`, the tree: which files, in what order, with what modes;
+// the text transformations are in release.cpp.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "framework/checkpoints.hpp"
+#include "framework/error.hpp"
+#include "grading/commands.hpp"
+#include "grading/release.hpp"
+
+namespace fs = std::filesystem;
+
+namespace grading {
+
+namespace {
+
+std::string read_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw fw::Error("cannot read '" + path.string() +
+                        "': check that it exists and is readable");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string shell_quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+// A file the release writes: its text when transformed, else copied as is.
+struct Planned {
+    std::string rel;
+    bool transformed = false;
+    std::string text;
+};
+
+}  // namespace
+
+std::vector<std::string> project_files(const std::string& source) {
+    std::vector<std::string> files;
+    fs::path root(source);
+    if (!fs::is_directory(root))
+        throw fw::Error("source tree '" + source +
+                        "' is not a directory; set LAB_ROOT to the repository");
+    if (fs::exists(root / ".git")) {
+        std::string command =
+            "git -C " + shell_quote(source) + " ls-files -z --cached --others --exclude-standard";
+        FILE* p = popen(command.c_str(), "r");
+        if (!p) throw fw::Error("cannot run '" + command + "': is git installed?");
+        std::string listing;
+        char buf[4096];
+        size_t n;
+        while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) listing.append(buf, n);
+        int status = pclose(p);
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+            throw fw::Error("'" + command + "' failed in the git checkout '" + source +
+                            "' (see git's message above); install git or fix the checkout");
+        for (size_t b = 0, e; b < listing.size(); b = e + 1) {
+            e = listing.find('\0', b);
+            if (e == std::string::npos) e = listing.size();
+            if (e > b) files.push_back(listing.substr(b, e - b));
+        }
+    } else {
+        for (auto it = fs::recursive_directory_iterator(root);
+             it != fs::recursive_directory_iterator(); ++it) {
+            std::string name = it->path().filename().string();
+            bool top = it.depth() == 0;
+            if (it->is_directory() &&
+                (name == ".git" || name == ".cache" || (top && name.rfind("build", 0) == 0))) {
+                it.disable_recursion_pending();
+                continue;
+            }
+            if (!it->is_directory()) files.push_back(fs::relative(it->path(), root).string());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    files.erase(std::unique(files.begin(), files.end()), files.end());
+    return files;
+}
+
+ReleaseSummary release_tree(const std::string& source, const std::string& out) {
+    fs::path root(source), dest(out);
+    std::error_code ec;
+    if (fs::exists(dest, ec) && (!fs::is_directory(dest, ec) || !fs::is_empty(dest, ec)))
+        throw fw::Error("output directory '" + out + "' " +
+                        (fs::is_directory(dest, ec) ? "is not empty" : "is not a directory") +
+                        "; give a new directory or empty this one");
+
+    ReleaseSummary summary;
+    std::vector<std::string> files = project_files(source);
+    // Pass 1: read, transform and check everything; nothing is written yet.
+    std::map<std::string, std::set<std::string>> hidden;  // labs/NN_name -> hidden names
+    std::vector<Planned> plan;
+    std::string errors;
+    for (const std::string& rel : files) {
+        fs::path src = root / rel;
+        if (!fs::exists(fs::symlink_status(src))) {
+            summary.missing.push_back(rel);
+            continue;
+        }
+        Planned p;
+        p.rel = rel;
+        fs::path r(rel);
+        bool is_checkpoints =
+            r.filename() == "checkpoints.json" && r.parent_path().parent_path() == "labs";
+        try {
+            if (fs::is_regular_file(fs::symlink_status(src)) && is_marked_source(rel)) {
+                std::string text = read_file(src);
+                size_t blocks = solution_blocks(text, rel).size();
+                if (blocks > 0) {
+                    p.transformed = true;
+                    p.text = student_text(text, rel);
+                    summary.blocks.push_back({rel, static_cast<int>(blocks)});
+                }
+            } else if (is_checkpoints) {
+                fw::read_checkpoint_file(
+                    src.string());  // its structure, with the framework's messages
+                VisibleCheckpoints v = drop_hidden_checkpoints(read_file(src), rel);
+                if (!v.dropped.empty()) {
+                    p.transformed = true;
+                    p.text = v.text;
+                    hidden[r.parent_path().string()].insert(v.dropped.begin(), v.dropped.end());
+                    summary.hidden.push_back({rel, v.dropped});
+                }
+            }
+        } catch (const fw::Error& e) {
+            errors += std::string("\n  ") + e.what();
+            continue;
+        }
+        plan.push_back(std::move(p));
+    }
+    if (!errors.empty()) throw fw::Error("the release was not written: fix these first:" + errors);
+
+    // Pass 2: write, leaving out the hidden checkpoints' references.
+    fs::create_directories(dest, ec);
+    if (ec) throw fw::Error("cannot create output directory '" + out + "': " + ec.message());
+    for (const Planned& p : plan) {
+        fs::path r(p.rel), src = root / p.rel, dst = dest / p.rel;
+        auto lab = hidden.find(r.parent_path().parent_path().string());
+        if (r.parent_path().filename() == "reference" && lab != hidden.end() &&
+            lab->second.count(r.stem().string())) {
+            summary.references_left_out.push_back(p.rel);
+            continue;
+        }
+        fs::create_directories(dst.parent_path(), ec);
+        if (ec)
+            throw fw::Error("cannot create directory '" + dst.parent_path().string() +
+                            "': " + ec.message());
+        if (fs::is_symlink(src)) {
+            fs::copy_symlink(src, dst, ec);
+        } else if (p.transformed) {
+            std::ofstream f(dst, std::ios::binary);
+            f << p.text;
+            if (!f.flush())
+                throw fw::Error("cannot write '" + dst.string() +
+                                "': check the disk and permissions");
+        } else {
+            fs::copy_file(src, dst, ec);
+        }
+        if (ec)
+            throw fw::Error("cannot copy '" + src.string() + "' to '" + dst.string() +
+                            "': " + ec.message());
+        if (!fs::is_symlink(src)) fs::permissions(dst, fs::status(src).permissions(), ec);
+        if (ec) throw fw::Error("cannot set the mode of '" + dst.string() + "': " + ec.message());
+        ++summary.files;
+    }
+    return summary;
+}
+
+int release_command(const std::string& out_dir) {
+    const std::string source = source_root();
+    ReleaseSummary s = release_tree(source, out_dir);
+    int blocks = 0;
+    size_t checkpoints = 0;
+    std::printf("course release: the student version of %s\n", source.c_str());
+    for (const auto& [file, n] : s.blocks) {
+        std::printf("  %-48s %d solution block%s removed\n", file.c_str(), n, n == 1 ? "" : "s");
+        blocks += n;
+    }
+    for (const auto& [file, names] : s.hidden) {
+        std::string list;
+        for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+        std::printf("  %-48s %zu hidden checkpoint%s dropped: %s\n", file.c_str(), names.size(),
+                    names.size() == 1 ? "" : "s", list.c_str());
+        checkpoints += names.size();
+    }
+    for (const std::string& file : s.references_left_out)
+        std::printf("  %-48s left out (reference of a hidden checkpoint)\n", file.c_str());
+    for (const std::string& file : s.missing)
+        std::printf("  %-48s not written: tracked by git but missing from the tree\n",
+                    file.c_str());
+    std::printf(
+        "%zu files written to %s; %d solution blocks removed from %zu files; %zu hidden "
+        "checkpoints and %zu reference files left out\n",
+        s.files, out_dir.c_str(), blocks, s.blocks.size(), checkpoints,
+        s.references_left_out.size());
+    return 0;
+}
+
+}  // namespace grading

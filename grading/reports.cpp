@@ -1,0 +1,348 @@
+// The text reports of a grading run: summary.txt (the score table `course
+// grade` also prints), results.json (Gradescope's autograder format) and
+// junit.xml (for CI dashboards). index.html is in report_html.cpp.
+#include "grading/reports.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "grading/report_text.hpp"
+
+namespace grading {
+namespace report {
+
+namespace {
+
+// The code point of the UTF-8 sequence starting at text[i] and its length in
+// bytes; length 0 when the bytes there are not a well-formed sequence
+// (overlong forms and UTF-16 surrogates included).
+size_t decode_utf8(const std::string& text, size_t i, char32_t& cp) {
+    const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
+    size_t length = 0;
+    char32_t smallest = 0;
+    if (byte(i) < 0x80) {
+        cp = byte(i);
+        return 1;
+    } else if ((byte(i) & 0xE0) == 0xC0) {
+        length = 2, cp = byte(i) & 0x1F, smallest = 0x80;
+    } else if ((byte(i) & 0xF0) == 0xE0) {
+        length = 3, cp = byte(i) & 0x0F, smallest = 0x800;
+    } else if ((byte(i) & 0xF8) == 0xF0) {
+        length = 4, cp = byte(i) & 0x07, smallest = 0x10000;
+    } else {
+        return 0;
+    }
+    if (i + length > text.size()) return 0;
+    for (size_t k = i + 1; k < i + length; ++k) {
+        if ((byte(k) & 0xC0) != 0x80) return 0;
+        cp = (cp << 6) | (byte(k) & 0x3F);
+    }
+    if (cp < smallest || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+    return length;
+}
+
+// XML 1.0's Char production, less DEL and the C1 controls, which it
+// discourages and which no report wants.
+bool allowed_char(char32_t cp) {
+    if (cp == 0x9 || cp == 0xA || cp == 0xD) return true;
+    if (cp < 0x20 || (cp >= 0x7F && cp <= 0x9F)) return false;
+    return cp <= 0xD7FF || (cp >= 0xE000 && cp <= 0xFFFD) || cp >= 0x10000;
+}
+
+// summary.txt is plain ASCII: a character outside it prints as '?', a tab
+// as a space.
+std::string ascii(const std::string& text) {
+    std::string out;
+    for (unsigned char c : clean_text(text)) {
+        if (c == '\t')
+            out += ' ';
+        else if (c == '\r')
+            continue;
+        else if (c < 0x80)
+            out += static_cast<char>(c);
+        else if (c >= 0xC0)
+            out += '?';  // first byte of a sequence; the rest are skipped
+    }
+    return out;
+}
+
+std::string fixed(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+size_t passed_count(const LabResult& lab) {
+    return static_cast<size_t>(std::count_if(lab.checks.begin(), lab.checks.end(),
+                                             [](const CheckResult& c) { return c.passed; }));
+}
+
+size_t check_count(const GradeRun& run) {
+    size_t n = 0;
+    for (const LabResult& lab : run.labs) n += lab.checks.size();
+    return n;
+}
+
+// What a check reports: its own output and, when the child as a whole failed,
+// why, so that a reader of one test sees the crash that failed it.
+std::string check_output(const LabResult& lab, const CheckResult& check) {
+    std::string text = check.output;
+    if (lab.status != "ok")
+        text += (text.empty() ? "" : "\n") + ("lab " + lab.lab + ": " + lab.status);
+    return text;
+}
+
+// The lab's number, from its id ("03_shading" -> "3"), for Gradescope's ordering.
+std::string lab_number(const LabResult& lab, size_t index) {
+    size_t digits = 0;
+    while (digits < lab.lab.size() && std::isdigit(static_cast<unsigned char>(lab.lab[digits])))
+        ++digits;
+    if (digits == 0) return std::to_string(index);
+    const size_t first = lab.lab.find_first_not_of('0');
+    return first >= digits ? "0" : lab.lab.substr(first, digits - first);
+}
+
+// Gradescope's visibility values are visible, hidden, after_due_date and
+// after_published; a checkpoint is either visible or hidden.
+std::string gradescope_visibility(const LabResult& lab, const CheckResult& check) {
+    if (check.visibility == "visible" || check.visibility == "hidden") return check.visibility;
+    throw fw::Error("check " + lab.lab + "/" + check.checkpoint + " \"" + check.title +
+                    "\" has visibility \"" + check.visibility +
+                    "\"; a checkpoint's visibility is visible or hidden");
+}
+
+std::string results_json(const GradeRun& run) {
+    nlohmann::ordered_json tests = nlohmann::ordered_json::array();
+    std::string problems;
+    for (size_t li = 0; li < run.labs.size(); ++li) {
+        const LabResult& lab = run.labs[li];
+        for (size_t ci = 0; ci < lab.checks.size(); ++ci) {
+            const CheckResult& c = lab.checks[ci];
+            nlohmann::ordered_json test;
+            test["name"] = clean_text(lab.lab + " / " + c.checkpoint + " / " + c.title);
+            test["number"] = lab_number(lab, li) + "." + std::to_string(ci + 1);
+            test["score"] = c.score;
+            test["max_score"] = c.max_score;
+            test["status"] = c.passed ? "passed" : "failed";
+            test["output"] = clean_text(check_output(lab, c));
+            test["visibility"] = gradescope_visibility(lab, c);
+            tests.push_back(test);
+        }
+        if (lab.status != "ok") problems += "\n" + lab.lab + ": " + lab.status + "\n" + lab.log;
+    }
+    size_t total = check_count(run), passed = 0;
+    for (const LabResult& lab : run.labs) passed += passed_count(lab);
+
+    nlohmann::ordered_json results;
+    results["score"] = run.score();
+    results["max_score"] = run.max_score();
+    results["execution_time"] = std::round(run.seconds * 1000.0) / 1000.0;
+    results["output"] = clean_text(points(run.score()) + "/" + points(run.max_score()) +
+                                   " points; " + std::to_string(passed) + " of " +
+                                   std::to_string(total) + " checks passed.\n" + problems);
+    results["tests"] = tests;
+    return results.dump(2) + "\n";
+}
+
+std::string junit_xml(const GradeRun& run) {
+    size_t failures = check_count(run);
+    for (const LabResult& lab : run.labs) failures -= passed_count(lab);
+    std::ostringstream x;
+    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<testsuites name=\"course grade\" tests=\"" << check_count(run) << "\" failures=\""
+      << failures << "\" time=\"" << fixed(run.seconds, 3) << "\">\n";
+    for (const LabResult& lab : run.labs) {
+        const std::string suite = escape_markup(lab.lab);
+        x << "  <testsuite name=\"" << suite << "\" tests=\"" << lab.checks.size()
+          << "\" failures=\"" << lab.checks.size() - passed_count(lab)
+          << "\" errors=\"0\" skipped=\"0\" time=\"" << fixed(lab.seconds, 3) << "\">\n";
+        for (const CheckResult& c : lab.checks) {
+            x << "    <testcase classname=\"" << suite << "\" name=\""
+              << escape_markup(c.checkpoint + " / " + c.title) << "\"";
+            const std::string output = check_output(lab, c);
+            if (c.passed && output.empty()) {
+                x << "/>\n";
+                continue;
+            }
+            x << ">\n";
+            if (c.passed) {
+                x << "      <system-out>" << escape_markup(output) << "</system-out>\n";
+            } else {
+                std::string message = first_line(output);
+                x << "      <failure message=\""
+                  << escape_markup(message.empty() ? "check failed" : message) << "\" type=\""
+                  << escape_markup(c.kind) << "\">" << escape_markup(output) << "</failure>\n";
+            }
+            x << "    </testcase>\n";
+        }
+        if (lab.status != "ok")
+            x << "    <system-err>" << escape_markup(lab.status + "\n" + lab.log)
+              << "</system-err>\n";
+        x << "  </testsuite>\n";
+    }
+    x << "</testsuites>\n";
+    return x.str();
+}
+
+}  // namespace
+
+std::string clean_text(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (size_t i = 0; i < text.size();) {
+        char32_t cp = 0;
+        size_t length = decode_utf8(text, i, cp);
+        if (length == 0) {
+            out += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER
+            ++i;
+            continue;
+        }
+        if (cp == 0x1B && i + 1 < text.size() && text[i + 1] == '[') {
+            // A terminal colour or cursor sequence (ECMA-48 CSI: ESC [ parameters
+            // final byte in @..~), as compilers print to terminals: dropped whole.
+            i += 2;
+            while (i < text.size() && !(text[i] >= '@' && text[i] <= '~')) ++i;
+            i += i < text.size();
+            continue;
+        }
+        if (allowed_char(cp)) out.append(text, i, length);
+        i += length;
+    }
+    return out;
+}
+
+std::string escape_markup(const std::string& text) {
+    std::string out;
+    for (char c : clean_text(text)) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+std::string first_line(const std::string& text) {
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+        const size_t begin = line.find_first_not_of(" \t\r");
+        if (begin == std::string::npos) continue;
+        return line.substr(begin, line.find_last_not_of(" \t\r") - begin + 1);
+    }
+    return {};
+}
+
+std::string points(double value) {
+    std::string text = fixed(value, 2);
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.') text.pop_back();
+    return text == "-0" ? "0" : text;
+}
+
+std::string in_dir(const std::string& out_dir, const std::string& relative) {
+    std::filesystem::path path(relative);
+    return path.is_absolute() ? relative : (std::filesystem::path(out_dir) / path).string();
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (file) file << text;
+    if (file) file.close();
+    if (!file)
+        throw fw::Error("cannot write the report " + path + ": " + std::strerror(errno) +
+                        "; check that its directory exists and is writable, or pick another --out");
+}
+
+}  // namespace report
+
+std::string summary_table(const GradeRun& run) {
+    using report::ascii;
+    using report::points;
+    std::vector<std::array<std::string, 5>> rows{{"lab", "score", "checks", "status", "seconds"}};
+    for (const LabResult& lab : run.labs)
+        rows.push_back(
+            {ascii(lab.lab), points(lab.score()) + "/" + points(lab.max_score()),
+             std::to_string(report::passed_count(lab)) + "/" + std::to_string(lab.checks.size()),
+             ascii(report::first_line(lab.status)), report::fixed(lab.seconds, 1)});
+    std::array<size_t, 5> width{};
+    for (const auto& row : rows)
+        for (size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], row[i].size());
+
+    // Text columns align left, numbers right.
+    const std::array<bool, 5> right{false, true, true, false, true};
+    std::string table;
+    for (const auto& row : rows) {
+        std::string line;
+        for (size_t i = 0; i < row.size(); ++i) {
+            const std::string pad(width[i] - row[i].size(), ' ');
+            line += (i ? "  " : "") + (right[i] ? pad + row[i] : row[i] + pad);
+        }
+        table += line.substr(0, line.find_last_not_of(' ') + 1) + "\n";
+    }
+    if (run.labs.empty()) table += "(no labs were graded)\n";
+
+    std::string failed;
+    size_t passed = 0;
+    for (const LabResult& lab : run.labs) {
+        passed += report::passed_count(lab);
+        for (const CheckResult& c : lab.checks) {
+            if (c.passed) continue;
+            const std::string why = report::first_line(report::check_output(lab, c));
+            failed += "  " +
+                      ascii(lab.lab + "/" + c.checkpoint + ": " + c.title +
+                            (why.empty() ? "" : " - " + why)) +
+                      "\n";
+        }
+    }
+    if (!failed.empty()) table += "\nFailed checks:\n" + failed;
+
+    const size_t labs = run.labs.size();
+    table += "\nTotal: " + points(run.score()) + "/" + points(run.max_score()) + " points, " +
+             std::to_string(passed) + " of " + std::to_string(report::check_count(run)) +
+             " checks passed, " + std::to_string(labs) + (labs == 1 ? " lab, " : " labs, ") +
+             report::fixed(run.seconds, 1) + " s" +
+             (run.backend.empty() ? "" : ", backend " + ascii(run.backend)) + "\n";
+    return table;
+}
+
+void write_reports(const GradeRun& run, const std::string& out_dir) {
+    std::error_code error;
+    std::filesystem::create_directories(out_dir, error);
+    if (error)
+        throw fw::Error("cannot create the report directory " + out_dir + ": " + error.message() +
+                        "; pick another --out");
+    report::write_text_file(report::in_dir(out_dir, "summary.txt"), summary_table(run));
+    report::write_text_file(report::in_dir(out_dir, "results.json"), report::results_json(run));
+    report::write_text_file(report::in_dir(out_dir, "junit.xml"), report::junit_xml(run));
+    report::write_text_file(report::in_dir(out_dir, "index.html"),
+                            report::html_report(run, out_dir));
+}
+
+}  // namespace grading

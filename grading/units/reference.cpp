@@ -1,0 +1,144 @@
+#include "grading/units/reference.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+
+#include "framework/error.hpp"
+
+namespace grading {
+
+namespace {
+
+using nlohmann::json;
+
+// Keyed by lab, then function name; a map so that error messages list names in order.
+std::map<std::string, std::map<std::string, ReferenceUnit>>& registry() {
+    static std::map<std::string, std::map<std::string, ReferenceUnit>> all;
+    return all;
+}
+
+// A float (the precision the child computes in) written with the 9 digits
+// that identify it, so that the arguments printed in the report read back
+// as exactly the ones evaluated.
+json float_value(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(static_cast<float>(v)));
+    return std::strtod(text, nullptr);
+}
+
+json random_number(double lo, double hi, std::mt19937& rng) {
+    return float_value(std::uniform_real_distribution<double>(lo, hi)(rng));
+}
+
+json random_value(const ArgDomain& d, std::mt19937& rng) {
+    switch (d.kind) {
+    case ArgDomain::Kind::Scalar:
+        return random_number(d.lo, d.hi, rng);
+    case ArgDomain::Kind::Integer:
+        return std::uniform_int_distribution<int>(static_cast<int>(d.lo), static_cast<int>(d.hi))(rng);
+    case ArgDomain::Kind::Bool:
+        return std::uniform_int_distribution<int>(0, 1)(rng) == 1;
+    case ArgDomain::Kind::Vector: {
+        json v = json::array();
+        for (int i = 0; i < d.size; ++i) v.push_back(random_number(d.lo, d.hi, rng));
+        return v;
+    }
+    case ArgDomain::Kind::UnitVector: {
+        // Normal samples normalised: uniform on the sphere. A near-zero
+        // sample is drawn again rather than divided by.
+        std::normal_distribution<double> normal;
+        for (;;) {
+            std::vector<double> v(static_cast<size_t>(d.size));
+            double len = 0.0;
+            for (double& x : v) {
+                x = normal(rng);
+                len += x * x;
+            }
+            len = std::sqrt(len);
+            if (len < 1e-6) continue;
+            json out = json::array();
+            for (double x : v) out.push_back(float_value(x / len));
+            return out;
+        }
+    }
+    }
+    throw fw::Error("random_arguments: unknown argument domain");
+}
+
+std::string number_text(const json& j) {
+    std::ostringstream s;
+    s.precision(9);
+    if (j.is_number()) s << j.get<double>();
+    else s << j.dump();
+    return s.str();
+}
+
+bool match(const json& e, const json& o, double tolerance, const std::string& where, std::string* why) {
+    auto fail = [&](const std::string& what) {
+        if (why) *why = (where.empty() ? "" : where + ": ") + what;
+        return false;
+    };
+    if (e.is_array()) {
+        if (!o.is_array()) return fail("expected an array of " + std::to_string(e.size()) + ", got " + o.dump());
+        if (o.size() != e.size())
+            return fail("expected " + std::to_string(e.size()) + " elements, got " + std::to_string(o.size()));
+        for (size_t i = 0; i < e.size(); ++i)
+            if (!match(e[i], o[i], tolerance, where + "[" + std::to_string(i) + "]", why)) return false;
+        return true;
+    }
+    if (e.is_boolean()) {
+        if (o != e) return fail("expected " + e.dump() + ", got " + o.dump());
+        return true;
+    }
+    if (e.is_number()) {
+        if (!o.is_number()) return fail("expected a number, got " + o.dump());
+        const double x = e.get<double>(), y = o.get<double>();
+        if (!std::isfinite(y) || std::fabs(x - y) > tolerance * std::max(1.0, std::fabs(x)))
+            return fail("expected " + number_text(e) + ", got " + number_text(o));
+        return true;
+    }
+    if (o != e) return fail("expected " + e.dump() + ", got " + o.dump());
+    return true;
+}
+
+}  // namespace
+
+bool register_reference(ReferenceUnit unit) {
+    if (static_cast<int>(unit.domains.size()) != unit.function.arity)
+        throw fw::Error("reference '" + unit.lab + "." + unit.function.name + "' takes " +
+                        std::to_string(unit.function.arity) + " arguments but has " +
+                        std::to_string(unit.domains.size()) + " domains");
+    std::string lab = unit.lab, name = unit.function.name;
+    registry()[lab][name] = std::move(unit);
+    return true;
+}
+
+const ReferenceUnit& find_reference(const std::string& lab, const std::string& function) {
+    auto& all = registry();
+    auto l = all.find(lab);
+    if (l != all.end()) {
+        auto f = l->second.find(function);
+        if (f != l->second.end()) return f->second;
+    }
+    std::string names;
+    if (l != all.end())
+        for (const auto& [name, unit] : l->second) names += (names.empty() ? "" : ", ") + name;
+    throw fw::Error("course has no reference for unit function '" + function + "' of lab '" + lab +
+                    "'; " + (names.empty() ? "it has none for that lab" : "it has: " + names) +
+                    " (references live in grading/units/)");
+}
+
+json random_arguments(const ReferenceUnit& unit, std::mt19937& rng) {
+    json args = json::array();
+    for (const ArgDomain& d : unit.domains) args.push_back(random_value(d, rng));
+    return args;
+}
+
+bool results_match(const json& expected, const json& observed, double tolerance, std::string* why) {
+    return match(expected, observed, tolerance, "", why);
+}
+
+}  // namespace grading

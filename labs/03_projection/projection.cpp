@@ -1,0 +1,225 @@
+// Lab 3 `projection`: camera, perspective and the depth buffer.
+//
+// Teaches: the view matrix from the camera's u, v, w basis; the perspective
+// and orthographic matrices; the divide by w and the viewport mapping; why
+// window depth is not linear in distance, and what a tiny near plane does to
+// the depth buffer (z-fighting).
+// Lecture: camera coordinates (lookAt), the view frustum, perspective and
+// parallel projection, NDC, the viewport transform, the depth buffer.
+// GL: the vertex shader's gl_Position, gl_FragCoord.z, glEnable(GL_DEPTH_TEST).
+// Student parts (between BEGIN SOLUTION and END SOLUTION): lookAt(),
+// perspective(), orthographic(), perspective01() and viewport() in
+// camera_math.cpp, and the transform in shaders/03_projection/projection.vert.
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <string>
+#include <vector>
+
+#include "camera_math.hpp"
+#include "framework/gl.hpp"
+#include "framework/lab.hpp"
+#include "scene.hpp"
+
+namespace projection {
+
+namespace {
+
+// The same number as `layout(location = 0)` in shaders/03_projection/
+// projection.vert: change both or neither.
+constexpr GLuint kPositionLocation = 0;
+
+const glm::vec3 kUp{0.0f, 1.0f, 0.0f};
+
+glm::vec3 vec3_param(const fw::ParamValues& p, const std::string& prefix) {
+    return {p.number(prefix + "_x"), p.number(prefix + "_y"), p.number(prefix + "_z")};
+}
+
+// V = lookAt(eye, target, (0, 1, 0)).
+glm::mat4 view_matrix(const fw::ParamValues& p) {
+    return lookAt(vec3_param(p, "eye"), vec3_param(p, "target"), kUp);
+}
+
+// P: perspective(fov, W/H, near, far), or orthographic with the half-height
+// s = ortho_size and the half-width s * W/H, so that squares stay square.
+glm::mat4 projection_matrix(const fw::ParamValues& p, float aspect) {
+    const float n = p.number("near"), f = p.number("far");
+    if (p.choice("mode") == "orthographic") {
+        const float s = p.number("ortho_size");
+        return orthographic(-s * aspect, s * aspect, -s, s, n, f);
+    }
+    return perspective(p.number("fov"), aspect, n, f);
+}
+
+// Sets a parameter to `value` clamped to its declared range.
+void set_clamped(fw::ParamValues& p, const std::string& name, double value) {
+    for (const fw::Param& param : p.params())
+        if (param.name == name) p.number_ref(name) = std::clamp(value, param.min, param.max);
+}
+
+fw::Param coordinate(const std::string& name, double def, const std::string& what, int key) {
+    return fw::Param::number(name, def).range(-50, 50).step(0.5).help(what).key(key);
+}
+
+}  // namespace
+
+class ProjectionLab : public fw::Lab {
+public:
+    static fw::LabInfo info() {
+        fw::LabInfo i;
+        i.number = 3;
+        i.id = "projection";
+        i.dir = "03_projection";
+        i.title = "Camera, perspective and the depth buffer";
+        i.params = {
+            fw::Param::choice("scene", {"cards", "zfight"}, "cards")
+                .help("cards: five squares at distances 2 to 32; zfight: two tilted quads "
+                      "0.002 apart, 20 units away")
+                .key('S'),
+            fw::Param::choice("show", {"color", "depth"}, "color")
+                .help("each square's colour, or its linearised depth as grey (near black, "
+                      "far white)")
+                .key('D'),
+            fw::Param::choice("mode", {"perspective", "orthographic"}, "perspective")
+                .help("perspective(fov, W/H, near, far) or orthographic(-s W/H, s W/H, -s, s, "
+                      "near, far), s = ortho_size")
+                .key('M'),
+            fw::Param::number("fov", 60)
+                .range(10, 150)
+                .step(5)
+                .unit("deg")
+                .help("vertical field of view (perspective)")
+                .key('V'),
+            fw::Param::number("near", 1)
+                .range(0.0001, 10)
+                .step(0.25)
+                .help("distance of the near plane; must be less than far")
+                .key('N'),
+            fw::Param::number("far", 50)
+                .range(0.1, 1000)
+                .step(10)
+                .help("distance of the far plane; must exceed near")
+                .key('F'),
+            fw::Param::number("ortho_size", 2)
+                .range(0.1, 50)
+                .step(0.5)
+                .help("half the height of the orthographic view volume (orthographic)")
+                .key('O'),
+            coordinate("eye_x", 0, "eye position, x (world)", 'X'),
+            coordinate("eye_y", 0, "eye position, y (world)", 'Y'),
+            coordinate("eye_z", 0, "eye position, z (world)", 'Z'),
+            coordinate("target_x", 0, "point the eye looks at, x (world)", 'J'),
+            coordinate("target_y", 0, "point the eye looks at, y (world)", 'K'),
+            coordinate("target_z", -1, "point the eye looks at, z (world)", 'L'),
+        };
+        i.controls = {"drag: orbit the eye around the target at the same distance",
+                      "wheel: field of view (fov)"};
+        i.functions = {
+            fw::unit_function("lookAt", &lookAt),
+            fw::unit_function("perspective", &perspective),
+            fw::unit_function("orthographic", &orthographic),
+            fw::unit_function("perspective01", &perspective01),
+            fw::unit_function("viewport", &viewport),
+        };
+        return i;
+    }
+
+    void init(fw::ProgramLibrary& programs) override {
+        program_ = &programs.load({"03_projection/projection.vert", "03_projection/projection.frag"});
+        square_vbo_ = fw::Buffer::from(unit_square(), GL_ARRAY_BUFFER, "unit square");
+        square_ = fw::VertexArray({&square_vbo_,
+                                   fw::VertexLayout::of<Vertex>().attr(kPositionLocation,
+                                                                       &Vertex::position),
+                                   nullptr, GL_UNSIGNED_INT, "unit square"});
+    }
+
+    void draw(const fw::ParamValues& p, const fw::Frame& frame) override {
+        frame_ = frame;
+        const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDisable(GL_CULL_FACE);
+
+        program_->use();
+        program_->set("u_view", view_matrix(p));
+        program_->set("u_projection", projection_matrix(p, aspect));
+        program_->set("u_show_depth", p.choice("show") == "depth");
+        program_->set("u_orthographic", p.choice("mode") == "orthographic");
+        program_->set("u_near", p.number("near"));
+        program_->set("u_far", p.number("far"));
+        for (const Object& object : scene_objects(p.choice("scene"))) {
+            program_->set("u_model", object.model);
+            program_->set("u_color", object.color);
+            square_.draw(GL_TRIANGLES, static_cast<GLsizei>(square_.vertex_count()));
+        }
+    }
+
+    // Where each square's centre went, through your matrices and viewport():
+    // {"centres": [{"object": "red", "clip": [x, y, z, w], "window": [x, y, depth]}, ...]}.
+    // Compare "window" with the PNG (pixels) and the --depth-out PFM (depth).
+    nlohmann::json stats(const fw::ParamValues& p) const override {
+        const float aspect = static_cast<float>(frame_.width) / static_cast<float>(frame_.height);
+        const glm::mat4 clip_from_world = projection_matrix(p, aspect) * view_matrix(p);
+        nlohmann::json centres = nlohmann::json::array();
+        for (const Object& object : scene_objects(p.choice("scene"))) {
+            const glm::vec4 clip = clip_from_world * object.model * glm::vec4(0, 0, 0, 1);
+            const glm::vec3 window = viewport(glm::vec3(clip) / clip.w, frame_.width, frame_.height);
+            centres.push_back({{"object", object.name},
+                               {"clip", {clip.x, clip.y, clip.z, clip.w}},
+                               {"window", {window.x, window.y, window.z}}});
+        }
+        return {{"centres", centres}};
+    }
+
+    // far > near, and a camera that lookAt can build: the eye away from the
+    // target, and a view direction that is not parallel to up (0, 1, 0).
+    std::string validate(const fw::ParamValues& p) const override {
+        if (!(p.number("far") > p.number("near")))
+            return "far (" + p.text("far") + ") must exceed near (" + p.text("near") +
+                   "); raise far or lower near";
+        const glm::vec3 view = vec3_param(p, "target") - vec3_param(p, "eye");
+        if (glm::length(view) == 0.0f)
+            return "the eye (eye_x/y/z) is at the target (target_x/y/z), so lookAt has no "
+                   "view direction; move one of them";
+        if (glm::length(glm::cross(view, kUp)) <= 1e-6f * glm::length(view))
+            return "the view direction, target - eye, is parallel to up (0, 1, 0), so lookAt "
+                   "has no right axis u; move eye_x/eye_z or target_x/target_z";
+        return {};
+    }
+
+    // Orbit: the eye turns about the target on a sphere of the same radius.
+    // Dragging right turns the scene right (the eye moves left); the
+    // elevation stops short of the poles, where the view would be parallel
+    // to up.
+    bool on_drag(fw::ParamValues& p, double dx, double dy) override {
+        const glm::dvec3 target = vec3_param(p, "target");
+        const glm::dvec3 offset = glm::dvec3(vec3_param(p, "eye")) - target;
+        const double r = glm::length(offset);
+        if (r == 0.0) return false;
+        const double yaw = std::atan2(offset.x, offset.z) - 0.01 * dx;
+        const double pitch = std::clamp(std::asin(offset.y / r) - 0.01 * dy, -1.5, 1.5);
+        const glm::dvec3 eye = target + r * glm::dvec3(std::cos(pitch) * std::sin(yaw),
+                                                       std::sin(pitch),
+                                                       std::cos(pitch) * std::cos(yaw));
+        set_clamped(p, "eye_x", eye.x);
+        set_clamped(p, "eye_y", eye.y);
+        set_clamped(p, "eye_z", eye.z);
+        return true;
+    }
+
+    // The wheel zooms: up narrows the field of view by 5 degrees a step.
+    bool on_scroll(fw::ParamValues& p, double steps) override {
+        set_clamped(p, "fov", p.number("fov") - 5.0 * steps);
+        return true;
+    }
+
+private:
+    fw::Program* program_ = nullptr;
+    fw::Buffer square_vbo_;
+    fw::VertexArray square_;
+    fw::Frame frame_;  // the last frame drawn, for stats()
+};
+
+FW_LAB(ProjectionLab)
+
+}  // namespace projection

@@ -1,0 +1,10 @@
+#version 430 core
+// Lab 1: one flat colour per draw (grey reference, red square, yellow marker).
+
+uniform vec3 u_color;
+
+layout(location = 0) out vec4 frag_color;
+
+void main() {
+    frag_color = vec4(u_color, 1.0);
+}

@@ -1,0 +1,10 @@
+#version 430 core
+// Lab 2: every part in one flat colour, unlit.
+
+uniform vec3 u_color;
+
+layout(location = 0) out vec4 frag_color;
+
+void main() {
+    frag_color = vec4(u_color, 1.0);
+}

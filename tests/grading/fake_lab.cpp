@@ -1,0 +1,167 @@
+// A hostile stand-in for `lab grade-child`, run by `course grade --lab`.
+// For the lab named by FAKE_LAB_TARGET it misbehaves as FAKE_LAB_MODE says;
+// for every other lab it becomes the real `lab` (exec), so that tests can
+// show one lab's misbehaviour costs the others nothing.
+//
+//   segv        dies of SIGSEGV before writing anything
+//   hang        never returns (course's timeout must end it)
+//   spew        writes to stdout without end
+//   bigfile     writes one file past course's per-file limit
+//   garbage     text where the PNGs, depth, stats and units.json belong; the
+//               first PNG has a valid header claiming 100000 x 100000 pixels
+//   liar        black frames, stats and units.json claiming a perfect score
+//   symlink     each NAME.png a link to course's reference (FAKE_LAB_REFERENCES)
+//   wrong_unit  the real lab's outputs, with every unit result changed
+//   snoop       tries to read FAKE_LAB_SNOOP_READ and write into
+//               FAKE_LAB_SNOOP_WRITE, prints what happened, exits 3
+// FAKE_LAB_MARK: a file the fake creates whenever it runs.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "framework/image.hpp"
+
+namespace {
+
+using nlohmann::json;
+
+std::string env(const char* name) {
+    const char* v = std::getenv(name);
+    return v ? v : "";
+}
+
+void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// Runs the real lab with our arguments and waits for it.
+int run_real(char** argv) {
+    pid_t pid = fork();
+    if (pid == 0) {
+        execv(FAKE_LAB_REAL, argv);
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+// Adds 1 to the first number found in `j`.
+bool nudge(json& j) {
+    if (j.is_number()) {
+        j = j.get<double>() + 1.0;
+        return true;
+    }
+    if (j.is_array())
+        for (json& e : j)
+            if (nudge(e)) return true;
+    return false;
+}
+
+void snoop(const std::string& read_path, const std::string& write_dir) {
+    int fd = open(read_path.c_str(), O_RDONLY);
+    std::printf("snoop: read %s: %s\n", read_path.c_str(), fd >= 0 ? "ALLOWED" : std::strerror(errno));
+    if (fd >= 0) close(fd);
+    const std::string target = write_dir + "/planted.txt";
+    fd = open(target.c_str(), O_WRONLY | O_CREAT, 0644);
+    std::printf("snoop: write %s: %s\n", target.c_str(), fd >= 0 ? "ALLOWED" : std::strerror(errno));
+    if (fd >= 0) close(fd);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string job_path, out;
+    for (int i = 1; i + 1 < argc; ++i) {
+        if (std::string(argv[i]) == "--job") job_path = argv[i + 1];
+        if (std::string(argv[i]) == "--out") out = argv[i + 1];
+    }
+    if (!env("FAKE_LAB_MARK").empty()) write_text(env("FAKE_LAB_MARK"), "ran\n");
+    std::ifstream in(job_path);
+    const json job = json::parse(in, nullptr, false);
+    const std::string mode = env("FAKE_LAB_MODE");
+    if (!job.is_object() || mode.empty() || job.value("lab", "") != env("FAKE_LAB_TARGET")) {
+        execv(FAKE_LAB_REAL, argv);
+        std::perror("fake_lab: exec " FAKE_LAB_REAL);
+        return 127;
+    }
+    const json renders = job.value("renders", json::array());
+    const json units = job.value("units", json::array());
+    std::printf("fake_lab: %s for lab %s\n", mode.c_str(), job.value("lab", "").c_str());
+    std::fflush(stdout);
+
+    if (mode == "segv") {
+        std::signal(SIGSEGV, SIG_DFL);  // not a sanitizer's report: the plain signal
+        std::raise(SIGSEGV);
+    } else if (mode == "hang") {
+        for (;;) pause();
+    } else if (mode == "spew") {
+        const std::string chunk(1 << 20, 'x');
+        for (;;) std::fwrite(chunk.data(), 1, chunk.size(), stdout);
+    } else if (mode == "bigfile") {
+        std::signal(SIGXFSZ, SIG_DFL);
+        std::ofstream big(out + "/big.bin", std::ios::binary);
+        const std::string chunk(1 << 20, 'x');
+        for (int i = 0; i < 1024 && big; ++i) big.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    } else if (mode == "garbage") {
+        bool first = true;
+        for (const json& r : renders) {
+            const std::string base = out + "/" + r.value("name", "");
+            if (first) {
+                // Signature and IHDR of a 100000 x 100000 image, then nothing.
+                const unsigned char header[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13,
+                                                'I', 'H', 'D', 'R', 0, 1, 0x86, 0xa0, 0, 1, 0x86, 0xa0,
+                                                8, 6, 0, 0, 0};
+                std::ofstream(base + ".png", std::ios::binary)
+                    .write(reinterpret_cast<const char*>(header), sizeof header);
+            } else {
+                write_text(base + ".png", "garbage instead of a PNG");
+            }
+            first = false;
+            write_text(base + ".pfm", "garbage");
+            write_text(base + ".stats.json", "{not json");
+        }
+        write_text(out + "/units.json", "garbage");
+    } else if (mode == "liar") {
+        for (const json& r : renders) {
+            const std::string base = out + "/" + r.value("name", "");
+            fw::write_png(base + ".png", fw::Image(r.value("width", 512), r.value("height", 512), {0, 0, 0, 255}));
+            write_text(base + ".stats.json", json{{"params", r.value("params", json::object())},
+                                                  {"passed", true}, {"score", 1000},
+                                                  {"primitives_generated", 0}}.dump());
+        }
+        json claims = json::object();
+        for (const json& u : units) claims[u.value("id", "")] = {{"result", "perfect"}, {"passed", true}};
+        write_text(out + "/units.json", claims.dump());
+        write_text(out + "/child.json", json{{"complete", true}, {"all_checks_passed", true}}.dump());
+    } else if (mode == "symlink") {
+        for (const json& r : renders) {
+            const std::string name = r.value("name", "") + ".png";
+            if (symlink((env("FAKE_LAB_REFERENCES") + "/" + name).c_str(), (out + "/" + name).c_str()) != 0)
+                std::perror("fake_lab: symlink");
+        }
+    } else if (mode == "wrong_unit") {
+        const int rc = run_real(argv);
+        std::ifstream results_in(out + "/units.json");
+        json results = json::parse(results_in, nullptr, false);
+        for (auto& [id, entry] : results.items())
+            if (entry.contains("result")) nudge(entry["result"]);
+        write_text(out + "/units.json", results.dump());
+        return rc;
+    } else if (mode == "snoop") {
+        snoop(env("FAKE_LAB_SNOOP_READ"), env("FAKE_LAB_SNOOP_WRITE"));
+        return 3;
+    } else {
+        std::fprintf(stderr, "fake_lab: unknown FAKE_LAB_MODE '%s'\n", mode.c_str());
+        return 64;
+    }
+    return 0;
+}

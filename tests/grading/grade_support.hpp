@@ -1,0 +1,130 @@
+// Helpers for the `course grade` tests: running course, small repository
+// trees for LAB_ROOT, and reading the reports back.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/support/test_support.hpp"
+
+namespace grade_test {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+inline std::string course() { return fw::test::bin_dir() + "/course"; }
+inline std::string fake_lab() { return fw::test::bin_dir() + "/fake_lab"; }
+
+struct Graded {
+    int exit_code = -1;
+    std::string output;
+    json results;  // results.json, null when missing
+    double seconds = 0.0;
+};
+
+// `env... course grade ARGS --out OUT`, then results.json.
+inline Graded grade(const std::string& env, const std::string& args, const std::string& out) {
+    fs::remove_all(out);
+    const auto start = std::chrono::steady_clock::now();
+    fw::test::CommandResult r = fw::test::run_command(env + " " + course() + " grade " + args + " --out " + out);
+    Graded g;
+    g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    g.exit_code = r.exit_code;
+    g.output = r.output;
+    MESSAGE("course grade " << args << ": exit " << r.exit_code << " after " << g.seconds << " s\n" << r.output);
+    std::ifstream in(out + "/results.json");
+    if (in) g.results = json::parse(in, nullptr, false);
+    return g;
+}
+
+// The tests of one lab in results.json ("<lab> / <checkpoint> / <check>").
+inline json lab_tests(const json& results, const std::string& lab) {
+    json out = json::array();
+    if (!results.is_object() || !results.contains("tests")) return out;
+    for (const json& t : results["tests"])
+        if (t.value("name", "").rfind(lab + " / ", 0) == 0) out.push_back(t);
+    return out;
+}
+
+inline void write_file(const std::string& path, const std::string& text) {
+    fs::create_directories(fs::path(path).parent_path());
+    std::ofstream(path) << text;
+}
+
+// A repository for LAB_ROOT: lab 0's data file and references copied from
+// the source tree and, with `hostile`, a lab "hostile" of two 64 x 64
+// checkpoints (image, probe, stat each, 3 points) with black references.
+inline std::string make_tree(const std::string& dir, bool hostile) {
+    fs::remove_all(dir);
+    const fs::path src = fs::path(fw::test::source_dir()) / "labs/00_pipeline";
+    fs::create_directories(dir + "/labs/00_pipeline");
+    fs::copy_file(src / "checkpoints.json", dir + "/labs/00_pipeline/checkpoints.json");
+    if (fs::exists(src / "reference")) fs::copy(src / "reference", dir + "/labs/00_pipeline/reference");
+    if (!hostile) return dir;
+    std::string checkpoints;
+    for (const char* name : {"frame", "frame2"}) {
+        checkpoints += std::string(checkpoints.empty() ? "" : ",\n") + R"(  {"name": ")" + name +
+                       R"(", "visibility": "visible", "params": {}, "checks": [
+     {"kind": "image", "size": [64, 64], "points": 1},
+     {"kind": "probe", "at": [1, 1], "color": [0, 0, 0], "points": 1},
+     {"kind": "stat", "stat": "primitives_generated", "equals": 0, "points": 1}]})";
+        fs::create_directories(dir + "/labs/01_hostile/reference");
+        fw::write_png(dir + "/labs/01_hostile/reference/" + name + ".png", fw::Image(64, 64, {0, 0, 0, 255}));
+    }
+    write_file(dir + "/labs/01_hostile/checkpoints.json",
+               "{\"lab\": \"hostile\", \"checkpoints\": [\n" + checkpoints + "]}\n");
+    return dir;
+}
+
+// Every report file is there and whole; results.json has `checks` tests.
+inline void check_reports(const std::string& out, size_t checks) {
+    for (const char* file : {"summary.txt", "results.json", "junit.xml", "index.html"}) {
+        CAPTURE(file);
+        CHECK(fs::exists(out + "/" + file));
+    }
+    std::ifstream html(out + "/index.html"), junit(out + "/junit.xml");
+    std::string h((std::istreambuf_iterator<char>(html)), {}), j((std::istreambuf_iterator<char>(junit)), {});
+    CHECK(h.find("</html>") != std::string::npos);
+    CHECK(j.find("</testsuites>") != std::string::npos);
+    std::ifstream in(out + "/results.json");
+    json results = json::parse(in, nullptr, false);
+    REQUIRE(results.is_object());
+    CHECK(results["tests"].size() == checks);
+}
+
+// Every check of lab 0, from its data file (read here, not by course).
+inline json lab0_checks() {
+    std::ifstream in(fw::test::source_dir() + "/labs/00_pipeline/checkpoints.json");
+    const json doc = json::parse(in, nullptr, true, /*ignore_comments=*/true);
+    json checks = json::array();
+    for (const json& cp : doc["checkpoints"])
+        for (const json& check : cp.value("checks", json::array())) checks.push_back(check);
+    return checks;
+}
+
+inline double points(const json& checks) {
+    double sum = 0.0;
+    for (const json& c : checks) sum += c["points"].get<double>();
+    return sum;
+}
+
+// Whether `lab` can render on `backend` here; `why` gets the reason if not.
+inline bool backend_available(const std::string& backend, std::string& why) {
+    const std::string png = fw::test::out_dir() + "/probe_" + backend + ".png";
+    fw::test::CommandResult r = fw::test::run_command(fw::test::bin_dir() + "/lab render pipeline --backend " +
+                                                      backend + " -o " + png);
+    why = r.output;
+    return r.exit_code == 0;
+}
+
+inline bool backend_required(const std::string& backend) {
+    const char* req = std::getenv("LAB_REQUIRE_BACKENDS");
+    return req && ("," + std::string(req) + ",").find("," + backend + ",") != std::string::npos;
+}
+
+}  // namespace grade_test

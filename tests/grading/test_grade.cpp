@@ -1,0 +1,182 @@
+// `course grade` and `course bless` on the real lab 0 (SPEC.md, `course`),
+// and the usage errors that stop a run before any child starts (Errors).
+// Expected scores come from lab 0's data file, read here.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "tests/grading/grade_support.hpp"
+
+using namespace grade_test;
+
+namespace {
+
+const json* find_named(const json& tests, const std::string& part) {
+    for (const json& t : tests)
+        if (t.value("name", "").find(part) != std::string::npos) return &t;
+    return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("course grade pipeline: full marks on each backend") {
+    const json checks = lab0_checks();
+    int graded = 0;
+    for (const std::string backend : {"osmesa", "egl"}) {
+        CAPTURE(backend);
+        std::string why;
+        if (!backend_available(backend, why)) {
+            if (backend_required(backend))
+                FAIL_CHECK("backend " << backend << " is required (LAB_REQUIRE_BACKENDS) but: " << why);
+            else
+                MESSAGE("SKIP backend " << backend << ": " << why);
+            continue;
+        }
+        ++graded;
+        const std::string out = fw::test::out_dir() + "/" + backend;
+        Graded g = grade("", "pipeline --backend " + backend, out);
+        MESSAGE("grade wall time for lab 0 on " << backend << ": " << g.seconds << " s");
+        CHECK(g.exit_code == 0);
+        REQUIRE(g.results.is_object());
+        MESSAGE("Expected max_score " << points(checks) << ", observed " << g.results["max_score"]);
+        CHECK(g.results["max_score"].get<double>() == points(checks));
+        CHECK(g.results["score"].get<double>() == g.results["max_score"].get<double>());
+        check_reports(out, checks.size());
+        for (const json& t : g.results["tests"]) {
+            CAPTURE(t.dump());
+            CHECK(t["status"] == "passed");
+        }
+        const json* unit = find_named(g.results["tests"], "unit expand_quad");
+        REQUIRE(unit);
+        CHECK((*unit)["output"].get<std::string>().find("102 of 102 cases passed") != std::string::npos);
+        for (const char* image : {"order_depth.png", "order_depth.expected.png", "order_depth.diff.png"}) {
+            CAPTURE(image);
+            CHECK(fs::exists(out + "/pipeline/" + image));
+        }
+        CHECK(g.output.find("pipeline") != std::string::npos);
+    }
+    if (graded == 0) {
+        std::printf("SKIP: neither osmesa nor egl renders here\n");
+        std::exit(77);
+    }
+}
+
+TEST_CASE("course grade --jobs 2 gives the same results as --jobs 1") {
+    const std::string tree = make_tree(fw::test::out_dir() + "/tree", /*hostile=*/true);
+    const std::string env = "LAB_ROOT=" + tree + " COURSE_SEED=1234 FAKE_LAB_TARGET=hostile FAKE_LAB_MODE=liar";
+    Graded one = grade(env, "--lab " + fake_lab() + " --jobs 1", fw::test::out_dir() + "/jobs1");
+    Graded two = grade(env, "--lab " + fake_lab() + " --jobs 2", fw::test::out_dir() + "/jobs2");
+    CHECK(one.exit_code == 0);  // the liar's black frames are exactly what "hostile" expects
+    CHECK(two.exit_code == one.exit_code);
+    REQUIRE(one.results.is_object());
+    REQUIRE(two.results.is_object());
+    CHECK(one.results["tests"].size() == lab0_checks().size() + 6);
+    CHECK(one.results["tests"] == two.results["tests"]);
+    CHECK(one.results["score"] == two.results["score"]);
+}
+
+TEST_CASE("course grade: usage and set-up errors exit 2 and say what would fix them") {
+    const std::string out = fw::test::out_dir() + "/report";
+    Graded g = grade("", "nosuch", out);
+    CHECK(g.exit_code == 2);
+    fw::test::check_mentions(g.output, {"unknown lab 'nosuch'", "pipeline"});
+
+    g = grade("", "pipeline --lab /nonexistent/lab", out);
+    CHECK(g.exit_code == 2);
+    fw::test::check_mentions(g.output, {"/nonexistent/lab", "--lab"});
+
+    if (geteuid() == 0) {
+        g = grade("", "pipeline --run-as no_such_user_here", out);
+        CHECK(g.exit_code == 2);
+        fw::test::check_mentions(g.output, {"no user 'no_such_user_here'"});
+    } else {
+        g = grade("", "pipeline --run-as nobody", out);
+        CHECK(g.exit_code == 2);
+        fw::test::check_mentions(g.output, {"needs root"});
+    }
+}
+
+TEST_CASE("course grade: a malformed check stops the run before any child, naming file, checkpoint and field") {
+    const std::string good = R"({"kind": "probe", "at": [256, 256], "color": [0, 0, 1], "tolerance": 0.01, "points": 2})";
+    struct Case {
+        std::string check;
+        std::vector<std::string> needles;
+    };
+    const Case cases[] = {
+        {R"({"kind": "histogram", "points": 2})", {"\"kind\"", "histogram", "image, probe, stat, unit"}},
+        {R"({"kind": "probe", "at": [256, 256], "colour": [0, 0, 1], "points": 2})", {"\"colour\"", "not a field"}},
+        {R"({"kind": "probe", "at": [256, 256], "color": [0, 0, 1], "tolerance": "small", "points": 2})",
+         {"\"tolerance\"", "\"small\""}},
+        {R"({"kind": "probe", "at": [600, 256], "color": [0, 0, 1], "points": 2})", {"\"at\"", "512x512"}},
+        {R"({"kind": "probe", "at": [256, 256], "color": [0, 0, 1]})", {"\"points\"", "missing"}},
+        {R"({"kind": "stat", "stat": "primitives_generated", "points": 1})", {"\"equals\"", "missing"}},
+        {R"({"kind": "unit", "function": "expand_quads", "points": 2})", {"\"function\"", "expand_quad"}},
+        {R"({"kind": "unit", "function": "expand_quad", "edge": [[1, 2]], "points": 2})", {"\"edge\"", "[1,2]"}},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.check);
+        const std::string tree = make_tree(fw::test::out_dir() + "/tree", false);
+        const std::string file = tree + "/labs/00_pipeline/checkpoints.json";
+        std::ifstream in(file);
+        std::string text((std::istreambuf_iterator<char>(in)), {});
+        const size_t at = text.find(good);
+        REQUIRE(at != std::string::npos);
+        write_file(file, text.replace(at, good.size(), c.check));
+        const std::string mark = fw::test::out_dir() + "/child_ran";
+        fs::remove(mark);
+        Graded g = grade("LAB_ROOT=" + tree + " FAKE_LAB_MARK=" + mark, "--lab " + fake_lab(),
+                         fw::test::out_dir() + "/report");
+        CHECK(g.exit_code == 2);
+        std::vector<std::string> needles = c.needles;
+        needles.insert(needles.end(), {file, "checkpoint 'order_depth'", "check 2"});
+        fw::test::check_mentions(g.output, needles);
+        CHECK_MESSAGE(!fs::exists(mark), "a child ran although the data file was rejected");
+    }
+}
+
+TEST_CASE("course grade: a unit check fails when the child returns wrong results") {
+    const json checks = lab0_checks();
+    double unit_points = 0;
+    for (const json& c : checks) unit_points += c["kind"] == "unit" ? c["points"].get<double>() : 0.0;
+    REQUIRE(unit_points > 0);
+    Graded g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=wrong_unit", "pipeline --lab " + fake_lab(),
+                     fw::test::out_dir() + "/report");
+    CHECK(g.exit_code == 1);
+    REQUIRE(g.results.is_object());
+    CHECK(g.results["score"].get<double>() == points(checks) - unit_points);
+    const json* unit = find_named(g.results["tests"], "unit expand_quad");
+    REQUIRE(unit);
+    CHECK((*unit)["status"] == "failed");
+    fw::test::check_mentions((*unit)["output"].get<std::string>(), {"seed", "0 of 102 cases passed", "expand_quad(", "expected",
+                                                 "observed", "[edge case]"});
+}
+
+TEST_CASE("course bless writes the references that course grade then accepts") {
+    std::string why;
+    if (!backend_available("osmesa", why)) {
+        if (backend_required("osmesa")) FAIL("osmesa is required (LAB_REQUIRE_BACKENDS) but: " << why);
+        std::printf("SKIP: course bless renders on osmesa, which is missing: %s\n", why.c_str());
+        std::exit(77);
+    }
+    const std::string tree = make_tree(fw::test::out_dir() + "/tree", false);
+    fs::remove_all(tree + "/labs/00_pipeline/reference");
+    fw::test::CommandResult r = fw::test::run_command("LAB_ROOT=" + tree + " " + course() + " bless pipeline");
+    MESSAGE(r.output);
+    CHECK(r.exit_code == 0);
+    int images = 0;
+    for (const json& c : lab0_checks()) images += c["kind"] == "image";
+    int written = 0;
+    for (const auto& e : fs::directory_iterator(tree + "/labs/00_pipeline/reference"))
+        written += e.path().extension() == ".png";
+    CHECK(written == images);  // one image check per checkpoint in lab 0
+    CHECK(r.output.find("wrote labs/00_pipeline/reference/order_depth.png") != std::string::npos);
+    Graded g = grade("LAB_ROOT=" + tree, "pipeline --backend osmesa", fw::test::out_dir() + "/report");
+    CHECK(g.exit_code == 0);
+
+    // A child that dies writes nothing and fails the command.
+    r = fw::test::run_command("LAB_ROOT=" + tree + " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=segv " + course() +
+                              " bless pipeline --lab " + fake_lab());
+    CHECK(r.exit_code == 2);
+    fw::test::check_mentions(r.output, {"crashed (signal 11, SIGSEGV)", "nothing written"});
+}

@@ -1,0 +1,105 @@
+// `course grade` against hostile children (SPEC.md, `course grade`): a crash,
+// a hang, a flood of output, an oversized file, garbage, links to the
+// references, and a child that claims a perfect score. Each fails exactly the
+// checks of its own lab with the reason, the reports are complete, and the
+// other lab, graded in the same run, keeps full marks.
+#include <cstdio>
+
+#include "tests/grading/grade_support.hpp"
+
+using namespace grade_test;
+
+namespace {
+
+struct Misbehaviour {
+    std::string mode;
+    std::string status;  // in course's output (the lab's status line)
+    // Substrings of every hostile check's output, or, keyed by part of the
+    // check's name, of that check's.
+    std::vector<std::string> every;
+    std::vector<std::pair<std::string, std::string>> specific;
+};
+
+}  // namespace
+
+TEST_CASE("course grade: a hostile child fails its own lab's checks, with the reason, and nothing else") {
+    const std::string tree = make_tree(fw::test::out_dir() + "/tree", /*hostile=*/true);
+    const size_t pipeline_checks = lab0_checks().size();
+    const std::vector<Misbehaviour> cases = {
+        {"segv", "crashed (signal 11, SIGSEGV)", {"the child crashed (signal 11, SIGSEGV) before writing frame"}, {}},
+        {"hang", "timed out after 2 s", {"the child timed out after 2 s before writing"}, {}},
+        {"spew", "wrote more than 8 MiB to stdout/stderr", {"wrote more than 8 MiB to stdout/stderr"}, {}},
+        {"bigfile", "SIGXFSZ", {"SIGXFSZ", "64 MiB"}, {}},
+        {"garbage", "ok", {},
+         {{"frame / image", "frame.png is 100000x100000, but course asked for 64x64"},
+          {"frame2 / image", "frame2.png is not a PNG: it starts with \"garbage instead"},
+          {"frame2 / probe", "frame2.png is not a PNG"},
+          {"frame / stat", "frame.stats.json is not a JSON object"}}},
+        {"symlink", "ok", {},
+         {{"frame / image", "frame.png is not a regular file"},
+          {"frame2 / probe", "frame2.png is not a regular file"},
+          {"frame / stat", "exited normally without writing frame.stats.json"}}},
+    };
+    for (const Misbehaviour& m : cases) {
+        CAPTURE(m.mode);
+        const std::string out = fw::test::out_dir() + "/" + m.mode;
+        const std::string env = "LAB_ROOT=" + tree + " FAKE_LAB_TARGET=hostile FAKE_LAB_MODE=" + m.mode +
+                                " FAKE_LAB_REFERENCES=" + tree + "/labs/01_hostile/reference";
+        Graded g = grade(env, "--lab " + fake_lab() + " --timeout 2 --jobs 2", out);
+        CHECK(g.exit_code == 1);
+        CHECK(g.output.find(m.status) != std::string::npos);
+        if (m.mode == "spew") CHECK_MESSAGE(g.seconds < 15, "killed at the cap, not after a long flood");
+        check_reports(out, pipeline_checks + 6);
+
+        const json pipeline = lab_tests(g.results, "pipeline");
+        CHECK(pipeline.size() == pipeline_checks);
+        for (const json& t : pipeline) {
+            CAPTURE(t.dump());
+            CHECK(t["status"] == "passed");
+        }
+        const json hostile = lab_tests(g.results, "hostile");
+        CHECK(hostile.size() == 6);
+        for (const json& t : hostile) {
+            CAPTURE(t.dump());
+            CHECK(t["status"] == "failed");
+            CHECK(t["score"] == 0);
+            const std::string output = t["output"];
+            for (const std::string& s : m.every) CHECK(output.find(s) != std::string::npos);
+            for (const auto& [name, s] : m.specific)
+                if (t["name"].get<std::string>().find(name) != std::string::npos)
+                    CHECK_MESSAGE(output.find(s) != std::string::npos, "expected the output to mention: " << s);
+        }
+    }
+}
+
+TEST_CASE("course grade: a child's claims count for nothing; only its raw outputs do") {
+    // The liar writes black frames, stats saying "passed" with a score of
+    // 1000, and units.json claiming every case passed. It earns exactly the
+    // points a black frame truly earns: probes that expect black, and image
+    // checks whose reference is within the thresholds of black (thin points
+    // and lines are), computed here with the framework's comparison.
+    std::ifstream in(fw::test::source_dir() + "/labs/00_pipeline/checkpoints.json");
+    const json doc = json::parse(in, nullptr, true, /*ignore_comments=*/true);
+    const fw::Image blank(512, 512, {0, 0, 0, 255});
+    double black = 0.0;
+    for (const json& cp : doc["checkpoints"])
+        for (const json& c : cp.value("checks", json::array())) {
+            if (c["kind"] == "probe" && c.contains("color") && c["color"] == json::array({0, 0, 0}))
+                black += c["points"].get<double>();
+            if (c["kind"] == "image" &&
+                fw::compare_images(blank, fw::read_png(fw::test::source_dir() + "/labs/00_pipeline/reference/" +
+                                                       cp["name"].get<std::string>() + ".png"))
+                    .passed) {
+                MESSAGE("a black frame passes the image check of " << cp["name"]);
+                black += c["points"].get<double>();
+            }
+        }
+    REQUIRE(black > 0);
+    Graded g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=liar", "pipeline --lab " + fake_lab(),
+                     fw::test::out_dir() + "/report");
+    CHECK(g.exit_code == 1);
+    REQUIRE(g.results.is_object());
+    MESSAGE("Expected score " << black << ", observed " << g.results["score"]);
+    CHECK(g.results["score"].get<double>() == black);
+    check_reports(fw::test::out_dir() + "/report", lab0_checks().size());
+}

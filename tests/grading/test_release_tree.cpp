@@ -1,0 +1,321 @@
+// `course release` end to end, on this repository:
+// - the student tree holds no marker and no hidden checkpoint, builds, runs
+//   every lab without a crash, and scores below full marks;
+// - every solution block is graded: with that block alone in its student
+//   version, some check that passes with the solution fails.
+// Both build trees of their own (minutes); CMake registers them as separate
+// tests (tests/grading/CMakeLists.txt).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "framework/checkpoints.hpp"
+#include "grading/commands.hpp"
+#include "grading/release.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace fs = std::filesystem;
+using fw::test::run_command;
+
+// release_command() is not called here; the tree is passed explicitly.
+std::string grading::source_root() { return fw::test::source_dir(); }
+
+namespace {
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string read(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void write(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    REQUIRE_MESSAGE(out.flush(), "cannot write " << path);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Runs `command`; on failure shows its output's tail.
+fw::test::CommandResult run(const std::string& command) {
+    auto start = std::chrono::steady_clock::now();
+    fw::test::CommandResult r = run_command(command);
+    std::printf("[%5.1f s] exit %d: %s\n", seconds_since(start), r.exit_code, command.c_str());
+    std::fflush(stdout);
+    if (r.exit_code != 0 && r.exit_code != 1)
+        MESSAGE("output (tail):\n"
+                << r.output.substr(r.output.size() > 6000 ? r.output.size() - 6000 : 0));
+    return r;
+}
+
+std::string jobs() { return std::to_string(std::max(1u, std::thread::hardware_concurrency())); }
+
+// Configures and builds `targets` of the tree at `source` into source/build,
+// warnings as errors (the student version must build cleanly too), through
+// ccache when it is installed.
+void build_tree(const fs::path& source, const std::string& targets) {
+    const std::string build = (source / "build").string();
+    std::string configure = "cmake -S " + quote(source.string()) + " -B " + quote(build) +
+                            " -DCMAKE_BUILD_TYPE=Release -DLAB_WERROR=ON";
+    if (run_command("command -v ccache").exit_code == 0)
+        configure += " -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache";
+    REQUIRE_MESSAGE(run(configure).exit_code == 0, "configuring " << source);
+    REQUIRE_MESSAGE(
+        run("cmake --build " + quote(build) + " -j" + jobs() + " --target " + targets).exit_code ==
+            0,
+        "building " << targets << " in " << source);
+}
+
+struct Grade {
+    int exit_code = -1;
+    std::string output;
+    nlohmann::json results;                     // results.json
+    std::map<std::string, std::string> status;  // lab -> its status in summary.txt
+    std::set<std::string> passed;               // names of the checks that passed
+};
+
+// `course grade` with `lab` as the child, in an environment without LAB_ROOT
+// and LAB_SHADER_DIR but with `env` (VAR=value ...).
+Grade grade(const std::string& course, const std::string& lab, const std::string& labs,
+            const fs::path& out, const std::string& env = "") {
+    fs::remove_all(out);
+    Grade g;
+    auto r =
+        run("env -u LAB_ROOT -u LAB_SHADER_DIR " + env + " " + quote(course) + " grade " + labs +
+            " --lab " + quote(lab) + " --out " + quote(out.string()) + " --jobs " + jobs());
+    g.exit_code = r.exit_code;
+    g.output = r.output;
+    if (!fs::exists(out / "results.json")) return g;
+    g.results = nlohmann::json::parse(read(out / "results.json"));
+    for (const auto& t : g.results["tests"])
+        if (t["status"] == "passed") g.passed.insert(t["name"].get<std::string>());
+    // summary.txt: "lab  score  checks  status...  seconds" under a header line.
+    std::istringstream table(read(out / "summary.txt"));
+    std::string line;
+    std::getline(table, line);
+    while (std::getline(table, line)) {
+        std::istringstream words(line);
+        std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
+        if (w.size() < 5) continue;
+        std::string status;
+        for (size_t i = 3; i + 1 < w.size(); ++i) status += (status.empty() ? "" : " ") + w[i];
+        g.status[w[0]] = status;
+    }
+    return g;
+}
+
+// The labs with a checkpoints file, by folder.
+std::vector<std::string> lab_dirs(const fs::path& root) {
+    std::vector<std::string> dirs;
+    for (const auto& e : fs::directory_iterator(root / "labs"))
+        if (fs::exists(e.path() / "checkpoints.json")) dirs.push_back(e.path().filename().string());
+    std::sort(dirs.begin(), dirs.end());
+    return dirs;
+}
+
+// A marker line as a person would spot it, whatever its spacing.
+const std::regex kMarker(R"(^\s*//\s*(BEGIN SOLUTION|END SOLUTION|STUDENT:))");
+
+}  // namespace
+
+TEST_CASE("release: the student tree has no solutions, builds, runs and scores below full marks") {
+    const fs::path source = fw::test::source_dir(), dir = fw::test::out_dir();
+    const fs::path student = dir / "student";
+    fs::remove_all(student);
+    auto r = run("env -u LAB_ROOT " + quote(fw::test::bin_dir() + "/course") + " release --out " +
+                 quote(student.string()));
+    MESSAGE(r.output);
+    REQUIRE(r.exit_code == 0);
+
+    // No marker line left in any C++ or GLSL file.
+    size_t code_files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(student)) {
+        if (!e.is_regular_file() || !grading::is_marked_source(e.path().string())) continue;
+        ++code_files;
+        std::istringstream lines(read(e.path()));
+        std::string line;
+        for (int n = 1; std::getline(lines, line); ++n)
+            CHECK_MESSAGE(!std::regex_search(line, kMarker),
+                          "marker left in " << e.path().string() << ":" << n << ": " << line);
+    }
+    CHECK(code_files > 0);
+
+    // Each lab's checkpoints: exactly the visible ones; hidden references absent.
+    for (const std::string& lab : lab_dirs(source)) {
+        fw::CheckpointFile solution =
+            fw::read_checkpoint_file((source / "labs" / lab / "checkpoints.json").string());
+        fw::CheckpointFile released =
+            fw::read_checkpoint_file((student / "labs" / lab / "checkpoints.json").string());
+        std::vector<std::string> expected, observed;
+        for (const auto& cp : solution.checkpoints) {
+            fs::path ref = fs::path("labs") / lab / "reference" / (cp.name + ".png");
+            if (cp.visibility == "visible") expected.push_back(cp.name);
+            if (cp.visibility == "hidden")
+                CHECK_MESSAGE(!fs::exists(student / ref),
+                              ref << " of a hidden checkpoint was released");
+            else if (fs::exists(source / ref))
+                CHECK_MESSAGE(fs::exists(student / ref),
+                              ref << " of a visible checkpoint is missing");
+        }
+        for (const auto& cp : released.checkpoints) observed.push_back(cp.name);
+        INFO(lab << ": expected the visible checkpoints, in order");
+        CHECK(observed == expected);
+    }
+
+    build_tree(student, "lab course");
+    const std::string bin = (student / "build" / "bin").string();
+    Grade g = grade(bin + "/course", bin + "/lab", "", dir / "grade");
+    MESSAGE(g.output);
+    CHECK(g.exit_code == 1);
+    REQUIRE(g.results.is_object());
+    for (const std::string& lab : lab_dirs(student)) {
+        // summary.txt names a lab by its checkpoints file's "lab".
+        std::string id =
+            fw::read_checkpoint_file((student / "labs" / lab / "checkpoints.json").string()).lab;
+        INFO("lab " << id << " (labs/" << lab << ") in summary.txt");
+        CHECK(g.status.count(id) == 1);
+        CHECK(g.status[id] == "ok");
+    }
+    const double score = g.results["score"], max_score = g.results["max_score"];
+    MESSAGE("student version: " << score << " of " << max_score << " points");
+    CHECK(max_score > 0);
+    CHECK(score < max_score);
+}
+
+namespace {
+
+struct Block {
+    std::string file;  // relative to the repository
+    size_t index = 0;  // in the file
+    int line = 0;      // of its BEGIN marker
+};
+
+// Which lab a file belongs to (labs/NN_name/..., shaders/NN_name/...); empty
+// for shared code (framework/), which every lab uses.
+std::string lab_of(const std::string& file, const std::vector<std::string>& labs) {
+    fs::path p(file);
+    auto it = p.begin();
+    if (it == p.end() || (*it != "labs" && *it != "shaders") || ++it == p.end()) return "";
+    return std::count(labs.begin(), labs.end(), it->string()) ? it->string() : "";
+}
+
+bool is_shader(const std::string& file) { return fs::path(file).begin()->string() == "shaders"; }
+
+// Makes `copy` hold the project's files as in `source`, rewriting only what
+// differs so that its build stays incremental between runs.
+void sync_tree(const fs::path& source, const fs::path& copy,
+               const std::vector<std::string>& files) {
+    std::set<std::string> wanted(files.begin(), files.end());
+    if (fs::exists(copy))
+        for (auto it = fs::recursive_directory_iterator(copy);
+             it != fs::recursive_directory_iterator(); ++it) {
+            std::string rel = fs::relative(it->path(), copy).string();
+            if (rel == "build")
+                it.disable_recursion_pending();
+            else if (it->is_regular_file() && !wanted.count(rel))
+                fs::remove(it->path());
+        }
+    for (const std::string& rel : files) {
+        if (!fs::is_regular_file(source / rel)) continue;
+        std::string text = read(source / rel);
+        if (fs::exists(copy / rel) && read(copy / rel) == text) continue;
+        fs::create_directories((copy / rel).parent_path());
+        fs::copy_file(source / rel, copy / rel, fs::copy_options::overwrite_existing);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("release: every solution block is graded" * doctest::skip()) {
+    const fs::path source = fw::test::source_dir(), dir = fw::test::out_dir();
+    const std::string course = fw::test::bin_dir() + "/course", lab = fw::test::bin_dir() + "/lab";
+    const std::vector<std::string> files = grading::project_files(source.string());
+    const std::vector<std::string> labs = lab_dirs(source);
+    std::vector<Block> blocks;
+    for (const std::string& file : files)
+        if (grading::is_marked_source(file) && fs::is_regular_file(source / file)) {
+            auto found = grading::solution_blocks(read(source / file), file);
+            for (size_t i = 0; i < found.size(); ++i)
+                blocks.push_back({file, i, found[i].begin_line});
+        }
+    MESSAGE(blocks.size() << " solution blocks in " << labs.size() << " labs");
+    if (blocks.empty()) return;
+
+    // What the solution passes: a block is graded when one of these fails without it.
+    Grade solution = grade(course, lab, "", dir / "solution");
+    REQUIRE(solution.results.is_object());
+    MESSAGE("the solution passes " << solution.passed.size() << " of "
+                                   << solution.results["tests"].size() << " checks");
+
+    // Shaders need no rebuild: the built `lab` reads them from LAB_SHADER_DIR.
+    const fs::path shaders = dir / "shaders", tree = dir / "tree";
+    fs::remove_all(shaders);
+    fs::copy(source / "shaders", shaders, fs::copy_options::recursive);
+    // C++ blocks: one copy of the tree, rebuilt incrementally for each block.
+    bool cpp = std::any_of(blocks.begin(), blocks.end(),
+                           [](const Block& b) { return !is_shader(b.file); });
+    if (cpp) {
+        sync_tree(source, tree, files);
+        build_tree(tree, "lab");
+    }
+
+    auto total = std::chrono::steady_clock::now();
+    std::string report;
+    for (const Block& b : blocks) {
+        auto start = std::chrono::steady_clock::now();
+        const std::string where = b.file + ":" + std::to_string(b.line);
+        const std::string only = lab_of(b.file, labs);
+        const std::string original = read(source / b.file);
+        const fs::path target = is_shader(b.file)
+                                    ? shaders / fs::path(b.file).lexically_relative("shaders")
+                                    : tree / b.file;
+        write(target, grading::student_text_of_block(original, b.file, b.index));
+
+        std::string result;
+        Grade g;
+        if (!is_shader(b.file) && run("cmake --build " + quote((tree / "build").string()) + " -j" +
+                                      jobs() + " --target lab")
+                                          .exit_code != 0) {
+            result = "the student version does not build";
+        } else {
+            std::string env = is_shader(b.file) ? "LAB_SHADER_DIR=" + quote(shaders.string()) : "";
+            std::string child = is_shader(b.file) ? lab : (tree / "build" / "bin" / "lab").string();
+            g = grade(course, child, only, dir / "block", env);
+            size_t caught = 0;
+            for (const std::string& name : solution.passed) caught += g.passed.count(name) == 0;
+            result = g.exit_code == 2 || !g.results.is_object()
+                         ? "grading failed (exit " + std::to_string(g.exit_code) + ")"
+                     : caught == 0 ? "NOT GRADED: every check the solution passes still passes"
+                                   : std::to_string(caught) + " checks fail";
+        }
+        write(target, original);
+        char line[512];
+        std::snprintf(line, sizeof line, "%-48s %-18s %s (%.1f s)\n", where.c_str(),
+                      only.empty() ? "all labs" : only.c_str(), result.c_str(),
+                      seconds_since(start));
+        std::printf("%s", line);
+        std::fflush(stdout);
+        report += line;
+        CHECK_MESSAGE(result.find("checks fail") != std::string::npos, where << ": " << result);
+    }
+    MESSAGE("solution blocks, each alone in its student version:\n"
+            << report << blocks.size() << " blocks in " << seconds_since(total) << " s");
+}
