@@ -26,8 +26,9 @@ int bless_command(const BlessOptions& options) {
         }
         LabChild child = run_lab_child(lab_binary, plan.job, options.backend, limits, nullptr);
         if (!child.run.ok()) {
-            std::fprintf(stderr, "course: bless: the lab child for '%s' %s; nothing written for it\n%s",
-                         lab.id.c_str(), child.run.status.c_str(), indented_tail(child.run.log, 20).c_str());
+            std::fprintf(
+                stderr, "course: bless: the lab child for '%s' %s; nothing written for it\n%s",
+                lab.id.c_str(), child.run.status.c_str(), indented_tail(child.run.log, 20).c_str());
             return 2;
         }
         // Every image first: a lab is blessed whole or not at all.
@@ -35,8 +36,10 @@ int bless_command(const BlessOptions& options) {
         for (size_t i = 0; i < plan.renders.size(); ++i) {
             std::string why;
             if (!read_rendered(*child.outputs, plan.renders[i], images[i], why)) {
-                std::fprintf(stderr, "course: bless: %s, checkpoint '%s': %s; nothing written for '%s'\n",
-                             lab.id.c_str(), plan.renders[i].checkpoint.c_str(), why.c_str(), lab.id.c_str());
+                std::fprintf(stderr,
+                             "course: bless: %s, checkpoint '%s': %s; nothing written for '%s'\n",
+                             lab.id.c_str(), plan.renders[i].checkpoint.c_str(), why.c_str(),
+                             lab.id.c_str());
                 return 2;
             }
         }

@@ -38,9 +38,10 @@ public:
         : lab_(lab), cp_(cp), index_(index), check_(check) {}
 
     [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-        std::string kind = check_.is_object() && check_.contains("kind") && check_["kind"].is_string()
-                               ? " (" + check_["kind"].get<std::string>() + ")"
-                               : "";
+        std::string kind =
+            check_.is_object() && check_.contains("kind") && check_["kind"].is_string()
+                ? " (" + check_["kind"].get<std::string>() + ")"
+                : "";
         throw fw::UsageError(lab_.file.path + ": checkpoint '" + cp_.name + "', check " +
                              std::to_string(index_ + 1) + kind +
                              (field.empty() ? ": " : ": \"" + field + "\" ") + what);
@@ -51,7 +52,8 @@ public:
     double number(const std::string& field, double lo, double hi) const {
         const json& v = check_[field];
         if (!v.is_number() || v.get<double>() < lo || v.get<double>() > hi)
-            fail(field, "must be a number in [" + json(lo).dump() + ", " + json(hi).dump() + "], got " + v.dump());
+            fail(field, "must be a number in [" + json(lo).dump() + ", " + json(hi).dump() +
+                            "], got " + v.dump());
         return v.get<double>();
     }
     int integer(const std::string& field, int lo, int hi) const {
@@ -61,7 +63,8 @@ public:
                             "], got " + v.dump());
         return v.get<int>();
     }
-    std::vector<double> numbers(const std::string& field, size_t min_n, size_t max_n, double lo, double hi) const {
+    std::vector<double> numbers(const std::string& field, size_t min_n, size_t max_n, double lo,
+                                double hi) const {
         const json& v = check_[field];
         bool ok = v.is_array() && v.size() >= min_n && v.size() <= max_n;
         for (size_t i = 0; ok && i < v.size(); ++i)
@@ -69,7 +72,8 @@ public:
         if (!ok)
             fail(field, "must be an array of " + std::to_string(min_n) +
                             (max_n > min_n ? " or " + std::to_string(max_n) : std::string()) +
-                            " numbers in [" + json(lo).dump() + ", " + json(hi).dump() + "], got " + v.dump());
+                            " numbers in [" + json(lo).dump() + ", " + json(hi).dump() + "], got " +
+                            v.dump());
         return v.get<std::vector<double>>();
     }
 
@@ -80,21 +84,29 @@ private:
     const json& check_;
 };
 
+bool is_size(const json& v) {
+    return v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer();
+}
+
 // The frame size of a checkpoint: the one its checks give, else 512 x 512.
+// (A malformed "size" is reported when its own check is validated.)
 std::pair<int, int> render_size(const fw::Checkpoint& cp) {
     for (const json& check : cp.checks)
-        if (check.contains("size")) return {check["size"][0].get<int>(), check["size"][1].get<int>()};
+        if (check.is_object() && check.contains("size") && is_size(check["size"]))
+            return {check["size"][0].get<int>(), check["size"][1].get<int>()};
     return {512, 512};
 }
 
 void validate_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check) {
     CheckWhere w(lab, cp, index, check);
-    if (!check.is_object()) w.fail("", "must be an object like {\"kind\": \"image\", \"points\": 1}");
+    if (!check.is_object())
+        w.fail("", "must be an object like {\"kind\": \"image\", \"points\": 1}");
     if (!check.contains("kind") || !check["kind"].is_string())
         w.fail("kind", "is missing: it must be one of image, probe, stat, unit");
     const std::string kind = check["kind"];
     auto fields = kFields.find(kind);
-    if (fields == kFields.end()) w.fail("kind", "is \"" + kind + "\"; it must be one of image, probe, stat, unit");
+    if (fields == kFields.end())
+        w.fail("kind", "is \"" + kind + "\"; it must be one of image, probe, stat, unit");
     for (const auto& [field, value] : check.items()) {
         (void)value;
         if (field != "kind" && field != "points" && !(field == "size" && kind != "unit") &&
@@ -105,19 +117,26 @@ void validate_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, 
             w.fail(field, "is not a field of a " + kind + " check; its fields are: " + allowed);
         }
     }
-    if (!check.contains("points")) w.fail("points", "is missing: how many points the check is worth");
+    if (!check.contains("points"))
+        w.fail("points", "is missing: how many points the check is worth");
     w.number("points", 0, 1000);
-    if (check.contains("size")) w.numbers("size", 2, 2, 1, 8192);
+    if (check.contains("size") &&
+        (!is_size(check["size"]) || check["size"][0] < 1 || check["size"][1] < 1 ||
+         check["size"][0] > 8192 || check["size"][1] > 8192))
+        w.fail("size",
+               "must be [width, height], integers from 1 to 8192, got " + check["size"].dump());
     auto [width, height] = render_size(cp);
     if (check.contains("size") && (check["size"][0] != width || check["size"][1] != height))
-        w.fail("size", "differs from another check's size; the checks of one checkpoint share one frame");
+        w.fail("size",
+               "differs from another check's size; the checks of one checkpoint share one frame");
 
     if (kind == "image") {
         if (w.has("tolerance")) w.integer("tolerance", 0, 255);
         if (w.has("radius")) w.integer("radius", 0, 16);
         if (w.has("max_fail_fraction")) w.number("max_fail_fraction", 0, 1);
     } else if (kind == "probe") {
-        if (w.has("at") == w.has("ndc")) w.fail("at", "or \"ndc\": a probe needs exactly one of them");
+        if (w.has("at") == w.has("ndc"))
+            w.fail("at", "or \"ndc\": a probe needs exactly one of them");
         if (w.has("at")) {
             std::vector<double> at = w.numbers("at", 2, 2, 0, 8192);
             if (!w.get("at")[0].is_number_integer() || !w.get("at")[1].is_number_integer() ||
@@ -127,12 +146,14 @@ void validate_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, 
         } else {
             w.numbers("ndc", 2, 2, -1, 1);
         }
-        if (w.has("color") == w.has("depth")) w.fail("color", "or \"depth\": a probe needs exactly one of them");
+        if (w.has("color") == w.has("depth"))
+            w.fail("color", "or \"depth\": a probe needs exactly one of them");
         if (w.has("color")) w.numbers("color", 3, 4, 0, 1);
         if (w.has("depth")) w.number("depth", 0, 1);
         if (w.has("tolerance")) w.number("tolerance", 0, 1);
     } else if (kind == "stat") {
-        if (!w.has("stat") || !w.get("stat").is_string() || w.get("stat").get<std::string>().empty())
+        if (!w.has("stat") || !w.get("stat").is_string() ||
+            w.get("stat").get<std::string>().empty())
             w.fail("stat", "must name a value of the frame's stats, e.g. \"primitives_generated\"");
         if (!w.has("equals") && !w.has("min") && !w.has("max"))
             w.fail("equals", "(or \"min\"/\"max\") is missing: what the value must be");
@@ -160,10 +181,11 @@ void validate_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, 
             if (!w.get("edge").is_array()) w.fail("edge", "must be a list of argument lists");
             for (const json& args : w.get("edge")) {
                 try {
-                    ref->function.call(args);  // the reference accepts them, so the lab's signature does
+                    ref->function.call(
+                        args);  // the reference accepts them, so the lab's signature does
                 } catch (const std::exception& e) {
-                    w.fail("edge", "has the argument list " + args.dump() + " that '" + ref->function.name +
-                                       "' does not take: " + e.what());
+                    w.fail("edge", "has the argument list " + args.dump() + " that '" +
+                                       ref->function.name + "' does not take: " + e.what());
                 }
             }
         }
@@ -198,7 +220,8 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
         bool render = false;
         for (const json& check : cp.checks) {
             const std::string kind = check["kind"];
-            render = render || (what == PlanFor::Grading ? kRenderKinds.count(kind) > 0 : kind == "image");
+            render = render ||
+                     (what == PlanFor::Grading ? kRenderKinds.count(kind) > 0 : kind == "image");
         }
         if (render) {
             auto [width, height] = render_size(cp);
@@ -217,9 +240,11 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
                 unit.cases.push_back({"u" + std::to_string(next_id++), args, true});
             const int random = check.value("random", 100);
             for (int k = 0; k < random; ++k)
-                unit.cases.push_back({"u" + std::to_string(next_id++), random_arguments(ref, rng), false});
+                unit.cases.push_back(
+                    {"u" + std::to_string(next_id++), random_arguments(ref, rng), false});
             for (const UnitCase& c : unit.cases)
-                plan.job["units"].push_back({{"id", c.id}, {"function", ref.function.name}, {"args", c.args}});
+                plan.job["units"].push_back(
+                    {{"id", c.id}, {"function", ref.function.name}, {"args", c.args}});
             plan.units.push_back(std::move(unit));
         }
     }

@@ -18,7 +18,6 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
-
 #include <string>
 #include <vector>
 
@@ -44,7 +43,8 @@ struct LabData {
 // Every labs/*/checkpoints.json under root, in folder order (grade.cpp).
 std::vector<LabData> discover_labs(const std::string& root);
 // The named labs, all when `names` is empty; throws fw::UsageError listing the labs.
-std::vector<LabData> select_labs(const std::vector<LabData>& all, const std::vector<std::string>& names);
+std::vector<LabData> select_labs(const std::vector<LabData>& all,
+                                 const std::vector<std::string>& names);
 // --lab, or `lab` beside course; throws fw::UsageError naming the path when missing.
 std::string resolve_lab_binary(const std::string& given);
 

@@ -45,7 +45,8 @@ void child_fail(const char* what) {
     int e = errno;
     char digits[16];
     int n = 0;
-    do digits[n++] = static_cast<char>('0' + e % 10); while ((e /= 10) > 0 && n < 15);
+    do digits[n++] = static_cast<char>('0' + e % 10);
+    while ((e /= 10) > 0 && n < 15);
     const char* prefix = "course: in the child, before running the lab: ";
     ssize_t ignored = write(2, prefix, std::strlen(prefix));
     ignored = write(2, what, std::strlen(what));
@@ -61,14 +62,17 @@ void switch_user(const RunAsUser& user) {
     if (setgroups(user.groups.size(), user.groups.data()) != 0) child_fail("setgroups");
     if (setgid(user.gid) != 0) child_fail("setgid");
     if (setuid(user.uid) != 0) child_fail("setuid");
-    if (getuid() != user.uid || geteuid() != user.uid || getegid() != user.gid) child_fail("setuid check");
+    if (getuid() != user.uid || geteuid() != user.uid || getegid() != user.gid)
+        child_fail("setuid check");
 }
 
 // Bytes in regular files under `dir`, not following links.
 std::uint64_t directory_bytes(const std::string& dir) {
     std::uint64_t total = 0;
     std::error_code ec;
-    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+    for (fs::recursive_directory_iterator
+             it(dir, fs::directory_options::skip_permission_denied, ec),
+         end;
          !ec && it != end; it.increment(ec)) {
         struct stat st;
         if (lstat(it->path().c_str(), &st) == 0 && S_ISREG(st.st_mode))
@@ -78,7 +82,9 @@ std::uint64_t directory_bytes(const std::string& dir) {
 }
 
 void set_limit(int resource, rlim_t value, const char* name) {
-    struct rlimit r{value, value};
+    struct rlimit r {
+        value, value
+    };
     if (setrlimit(resource, &r) != 0) child_fail(name);
 }
 
@@ -98,23 +104,26 @@ std::string indented_tail(const std::string& log, int lines) {
         pos = nl + 1;
     }
     std::string out;
-    for (size_t i = all.size() > size_t(lines) ? all.size() - size_t(lines) : 0; i < all.size(); ++i)
-        out += "    | " + all[i] + "\n";
+    for (size_t i = all.size() > size_t(lines) ? all.size() - size_t(lines) : 0; i < all.size();
+         ++i)
+        out += "    | " + (all[i].size() > 200 ? all[i].substr(0, 200) + "..." : all[i]) + "\n";
     return out;
 }
 
 RunAsUser lookup_user(const std::string& name) {
     if (geteuid() != 0)
-        throw fw::UsageError("--run-as " + name + " needs root, but course runs as uid " +
-                             std::to_string(geteuid()) +
-                             ": run course as root, or leave out --run-as to run the child as yourself");
+        throw fw::UsageError(
+            "--run-as " + name + " needs root, but course runs as uid " +
+            std::to_string(geteuid()) +
+            ": run course as root, or leave out --run-as to run the child as yourself");
     struct passwd pw, *found = nullptr;
     std::vector<char> buf(16384);
     if (getpwnam_r(name.c_str(), &pw, buf.data(), buf.size(), &found) != 0 || !found)
         throw fw::UsageError("--run-as: no user '" + name +
                              "' on this machine; name an existing unprivileged user, e.g. nobody");
     if (pw.pw_uid == 0)
-        throw fw::UsageError("--run-as " + name + ": that user is root, which would give the child "
+        throw fw::UsageError("--run-as " + name +
+                             ": that user is root, which would give the child "
                              "root's rights; name an unprivileged user, e.g. nobody");
     RunAsUser user{name, pw.pw_uid, pw.pw_gid, {}};
     int count = 64;
@@ -127,7 +136,8 @@ RunAsUser lookup_user(const std::string& name) {
 
 bool user_can_access(const RunAsUser& user, const std::string& path, int mode) {
     pid_t pid = fork();
-    if (pid < 0) throw fw::Error(std::string("cannot fork to test access: ") + std::strerror(errno));
+    if (pid < 0)
+        throw fw::Error(std::string("cannot fork to test access: ") + std::strerror(errno));
     if (pid == 0) {
         switch_user(user);
         _exit(access(path.c_str(), mode) == 0 ? 0 : 1);
@@ -147,8 +157,8 @@ WorkDir::WorkDir(const RunAsUser* user) {
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
     if (!mkdtemp(name.data()))  // mode 0700
-        throw fw::Error("cannot create a work directory '" + pattern + "': " + std::strerror(errno) +
-                        "; set TMPDIR to a writable directory");
+        throw fw::Error("cannot create a work directory '" + pattern +
+                        "': " + std::strerror(errno) + "; set TMPDIR to a writable directory");
     path_ = name.data();
     user_ = user;
 }
@@ -244,7 +254,9 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     // Until it has exited and its pipe is drained (or held open past the
     // drain time by something it left behind).
     while (!(exited && (eof || elapsed() > drain_until))) {
-        struct pollfd p{fds[0], POLLIN, 0};
+        struct pollfd p {
+            fds[0], POLLIN, 0
+        };
         poll(&p, eof ? 0 : 1, 50);  // after EOF: just wait
         while (!eof) {
             ssize_t n = read(fds[0], buf, sizeof buf);
@@ -263,14 +275,16 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
         if (!exited && waitpid(pid, &wait_status, WNOHANG) == pid) {
             exited = true;
             killpg(pid, SIGKILL);  // anything it started and left running
-            drain_until = elapsed() + 0.5;  // what is still in the pipe, unless something holds it open
+            drain_until =
+                elapsed() + 0.5;  // what is still in the pipe, unless something holds it open
         }
         if (!exited && elapsed() > limits.timeout_seconds)
             stop("timed out after " + seconds_text(limits.timeout_seconds) + " s");
         if (!exited && elapsed() > next_size_check) {
             next_size_check = elapsed() + 0.25;
             if (directory_bytes(dir) > limits.work_dir_cap)
-                stop("wrote more than " + mib_text(limits.work_dir_cap) + " into its work directory");
+                stop("wrote more than " + mib_text(limits.work_dir_cap) +
+                     " into its work directory");
         }
     }
     close(fds[0]);
@@ -280,8 +294,10 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     if (WIFSIGNALED(wait_status)) {
         const int sig = WTERMSIG(wait_status);
         run.status = signal_status(sig);
-        if (sig == SIGXFSZ) run.status += ": it wrote a file over the " + mib_text(limits.file_cap) + " limit";
-        if (sig == SIGXCPU) run.status += ": it used more than " + std::to_string(cpu_seconds) + " s of CPU time";
+        if (sig == SIGXFSZ)
+            run.status += ": it wrote a file over the " + mib_text(limits.file_cap) + " limit";
+        if (sig == SIGXCPU)
+            run.status += ": it used more than " + std::to_string(cpu_seconds) + " s of CPU time";
     } else if (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) != 0) {
         run.status = "exit status " + std::to_string(WEXITSTATUS(wait_status));
     }
@@ -293,8 +309,8 @@ ChildOutputs::ChildOutputs(std::string dir, const ChildRun& run, const ChildLimi
     const std::uint64_t total = directory_bytes(dir_);
     if (total > limits.work_dir_cap)
         too_large_ = "output too large: the child left " + std::to_string(total) +
-                     " bytes in its work directory, more than the " + mib_text(limits.work_dir_cap) +
-                     " limit";
+                     " bytes in its work directory, more than the " +
+                     mib_text(limits.work_dir_cap) + " limit";
 }
 
 std::string ChildOutputs::missing_reason(const std::string& name) const {
@@ -366,6 +382,8 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
     if (!backend.empty()) argv.insert(argv.end(), {"--backend", backend});
     child.run = run_child(argv, dir, limits, user);
     child.outputs = std::make_unique<ChildOutputs>(dir, child.run, limits);
+    if (child.run.ok() && !child.outputs->too_large().empty())
+        child.run.status = child.outputs->too_large();
     return child;
 }
 

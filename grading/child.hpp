@@ -7,10 +7,9 @@
 
 #include <sys/types.h>
 
-#include <nlohmann/json.hpp>
-
 #include <cstdint>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -19,13 +18,13 @@ namespace grading {
 constexpr std::uint64_t kMiB = 1024 * 1024;
 
 struct ChildLimits {
-    double timeout_seconds = 60.0;         // wall clock; then the whole group is killed
-    std::uint64_t output_cap = 8 * kMiB;   // stdout + stderr together
-    std::uint64_t log_kept = 64 * 1024;    // the tail of stdout + stderr kept for the report
-    std::uint64_t file_cap = 64 * kMiB;    // RLIMIT_FSIZE: bytes per file it writes
+    double timeout_seconds = 60.0;            // wall clock; then the whole group is killed
+    std::uint64_t output_cap = 8 * kMiB;      // stdout + stderr together
+    std::uint64_t log_kept = 64 * 1024;       // the tail of stdout + stderr kept for the report
+    std::uint64_t file_cap = 64 * kMiB;       // RLIMIT_FSIZE: bytes per file it writes
     std::uint64_t work_dir_cap = 256 * kMiB;  // all files in its work directory
     std::uint64_t memory_cap = 8192 * kMiB;   // RLIMIT_AS (not under AddressSanitizer)
-    int open_files = 256;                  // RLIMIT_NOFILE
+    int open_files = 256;                     // RLIMIT_NOFILE
 };
 
 // The user a child runs as (--run-as), resolved before any child starts.
@@ -84,6 +83,8 @@ public:
     std::string path(const std::string& name) const { return dir_ + "/" + name; }
     // Why there is no `name` when the child did not write it.
     std::string missing_reason(const std::string& name) const;
+    // Non-empty when the work directory as a whole is over its cap.
+    const std::string& too_large() const { return too_large_; }
 
 private:
     std::string dir_;
@@ -105,7 +106,8 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
 // "crashed (signal 11, SIGSEGV)".
 std::string signal_status(int signal);
 
-// The last `lines` lines of a child's log, indented, for the console.
+// The last `lines` lines of a child's log, indented and cut to 200
+// characters each, for the console.
 std::string indented_tail(const std::string& log, int lines);
 
 }  // namespace grading

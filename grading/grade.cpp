@@ -6,9 +6,9 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <mutex>
@@ -34,8 +34,9 @@ std::string source_root() {
 std::vector<LabData> discover_labs(const std::string& root) {
     const fs::path labs_dir = fs::path(root) / "labs";
     if (!fs::is_directory(labs_dir))
-        throw fw::UsageError("no labs/ folder in '" + root +
-                             "'; set LAB_ROOT to the repository that holds labs/NN_name/checkpoints.json");
+        throw fw::UsageError(
+            "no labs/ folder in '" + root +
+            "'; set LAB_ROOT to the repository that holds labs/NN_name/checkpoints.json");
     std::set<std::string> folders;
     for (const fs::directory_entry& e : fs::directory_iterator(labs_dir))
         if (e.is_directory() && fs::exists(e.path() / "checkpoints.json"))
@@ -56,7 +57,8 @@ std::vector<LabData> discover_labs(const std::string& root) {
     return labs;
 }
 
-std::vector<LabData> select_labs(const std::vector<LabData>& all, const std::vector<std::string>& names) {
+std::vector<LabData> select_labs(const std::vector<LabData>& all,
+                                 const std::vector<std::string>& names) {
     if (names.empty()) return all;
     std::string known;
     for (const LabData& lab : all) known += (known.empty() ? "" : ", ") + lab.id;
@@ -65,7 +67,8 @@ std::vector<LabData> select_labs(const std::vector<LabData>& all, const std::vec
         bool found = false;
         for (const LabData& lab : all) found = found || lab.id == name || lab.dir == name;
         if (!found)
-            throw fw::UsageError("unknown lab '" + name + "'; the labs are: " + (known.empty() ? "(none)" : known));
+            throw fw::UsageError("unknown lab '" + name +
+                                 "'; the labs are: " + (known.empty() ? "(none)" : known));
         wanted.insert(name);
     }
     std::vector<LabData> out;
@@ -79,7 +82,9 @@ std::string resolve_lab_binary(const std::string& given) {
     if (path.empty()) {
         std::error_code ec;
         const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-        if (ec) throw fw::UsageError("cannot find course's own directory (/proc/self/exe): pass --lab PATH");
+        if (ec)
+            throw fw::UsageError(
+                "cannot find course's own directory (/proc/self/exe): pass --lab PATH");
         path = (self.parent_path() / "lab").string();
     }
     const std::string abs = fs::absolute(path).string();
@@ -87,7 +92,8 @@ std::string resolve_lab_binary(const std::string& given) {
         throw fw::UsageError("no lab executable at '" + abs +
                              "'; build it (cmake --build build --target lab) or pass --lab PATH");
     if (!fs::is_regular_file(abs) || access(abs.c_str(), X_OK) != 0)
-        throw fw::UsageError("'" + abs + "' is not an executable file; pass --lab with the `lab` executable");
+        throw fw::UsageError("'" + abs +
+                             "' is not an executable file; pass --lab with the `lab` executable");
     return abs;
 }
 
@@ -99,14 +105,15 @@ unsigned seed_from_env() {
     char* end = nullptr;
     const unsigned long v = std::strtoul(text, &end, 10);
     if (*end != '\0' || v > 0xffffffffUL)
-        throw fw::UsageError("COURSE_SEED='" + std::string(text) + "' is not a number from 0 to 4294967295");
+        throw fw::UsageError("COURSE_SEED='" + std::string(text) +
+                             "' is not a number from 0 to 4294967295");
     return static_cast<unsigned>(v);
 }
 
 void set_owner_mode(const std::string& path, mode_t mode) {
     if (chown(path.c_str(), 0, 0) != 0 || chmod(path.c_str(), mode) != 0)
-        throw fw::Error("cannot make '" + path + "' root's with mode " + std::to_string(mode) + ": " +
-                        std::strerror(errno));
+        throw fw::Error("cannot make '" + path + "' root's with mode " + std::to_string(mode) +
+                        ": " + std::strerror(errno));
 }
 
 // The output directory and its per-lab image folders. With --run-as, the
@@ -114,8 +121,9 @@ void set_owner_mode(const std::string& path, mode_t mode) {
 // makes every labs/*/reference folder (course's own tree) root's with mode
 // 0700, the output directory root's 0755 and the image folders, which hold
 // copies of references, 0700; then checks all that as the user.
-void prepare(const std::string& out, const std::vector<LabData>& all, const std::vector<LabData>& graded,
-             const std::string& lab_binary, const RunAsUser* user) {
+void prepare(const std::string& out, const std::vector<LabData>& all,
+             const std::vector<LabData>& graded, const std::string& lab_binary,
+             const RunAsUser* user) {
     const bool created = !fs::exists(out);
     fs::create_directories(out);
     if (user && created) set_owner_mode(out, 0755);
@@ -137,7 +145,8 @@ void prepare(const std::string& out, const std::vector<LabData>& all, const std:
         if (fs::exists(lab.reference_dir()) && user_can_access(*user, lab.reference_dir(), R_OK))
             deny("could still read '" + lab.reference_dir() + "'");
     if (!user_can_access(*user, lab_binary, X_OK))
-        deny("cannot run '" + lab_binary + "'; put the build where that user can read and execute it");
+        deny("cannot run '" + lab_binary +
+             "'; put the build where that user can read and execute it");
 }
 
 std::string score_text(double v) {
@@ -167,7 +176,9 @@ int grade_command(const GradeOptions& options) {
 
     GradeRun run;
     const char* env_backend = std::getenv("LAB_BACKEND");
-    run.backend = !options.backend.empty() ? options.backend : env_backend && *env_backend ? env_backend : "auto";
+    run.backend = !options.backend.empty()      ? options.backend
+                  : env_backend && *env_backend ? env_backend
+                                                : "auto";
     run.labs.resize(labs.size());
 
     // --jobs workers take labs in order; each lab is one child.
@@ -177,7 +188,8 @@ int grade_command(const GradeOptions& options) {
     auto worker = [&] {
         for (size_t i; (i = next++) < labs.size();) {
             try {
-                LabChild child = run_lab_child(lab_binary, plans[i].job, options.backend, limits, as);
+                LabChild child =
+                    run_lab_child(lab_binary, plans[i].job, options.backend, limits, as);
                 LabResult& result = run.labs[i];
                 result.lab = labs[i].id;
                 result.status = child.run.status;
@@ -186,8 +198,10 @@ int grade_command(const GradeOptions& options) {
                 result.checks = judge_lab(labs[i], plans[i], *child.outputs, options.out);
                 if (!options.progress) continue;
                 std::lock_guard<std::mutex> lock(print_mutex);
-                std::printf("%-16s %6s/%-6s %s  %.1f s\n", result.lab.c_str(), score_text(result.score()).c_str(),
-                            score_text(result.max_score()).c_str(), result.status.c_str(), result.seconds);
+                const std::string score =
+                    score_text(result.score()) + "/" + score_text(result.max_score());
+                std::printf("%-16s %9s  %5.1f s  %s\n", result.lab.c_str(), score.c_str(),
+                            result.seconds, result.status.c_str());
                 if (!child.run.ok()) std::printf("%s", indented_tail(result.log, 12).c_str());
                 std::fflush(stdout);
             } catch (...) {

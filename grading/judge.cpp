@@ -28,7 +28,8 @@ std::string compact(const json& j, size_t max = 240) {
     std::string s;
     if (j.is_array()) {
         s = "[";
-        for (size_t i = 0; i < j.size() && s.size() <= max; ++i) s += (i ? ", " : "") + compact(j[i], max);
+        for (size_t i = 0; i < j.size() && s.size() <= max; ++i)
+            s += (i ? ", " : "") + compact(j[i], max);
         s += "]";
     } else {
         s = j.is_number_float() ? num(j.get<double>()) : j.dump();
@@ -69,7 +70,8 @@ public:
         has_color_ = read_rendered(outputs, plan, color_, color_why_);
         if (has_color_) {
             rendered_ = lab + "/" + plan.checkpoint + ".png";
-            fw::write_png(out_dir + "/" + rendered_, color_);  // re-encoded: course writes only what it decoded
+            fw::write_png(out_dir + "/" + rendered_,
+                          color_);  // re-encoded: course writes only what it decoded
         }
     }
     const std::string& rendered() const { return rendered_; }
@@ -150,17 +152,19 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const json& check
     opt.radius = check.value("radius", 1);
     opt.max_failed_fraction = check.value("max_fail_fraction", 0.001);
     const int side = 2 * opt.radius + 1;
-    const std::string expected = "Expected: " + lab.reference(cp.name) + "; a pixel passes when a reference pixel in its " +
-                                 std::to_string(side) + "x" + std::to_string(side) + " neighbourhood is within " +
-                                 std::to_string(opt.tolerance) + "/255 on every channel; at most " +
-                                 num(opt.max_failed_fraction * 100) + "% of pixels may fail\n";
+    const std::string expected =
+        "Expected: " + lab.reference(cp.name) + "; a pixel passes when a reference pixel in its " +
+        std::to_string(side) + "x" + std::to_string(side) + " neighbourhood is within " +
+        std::to_string(opt.tolerance) + "/255 on every channel; at most " +
+        num(opt.max_failed_fraction * 100) + "% of pixels may fail\n";
     std::string why;
     const fw::Image* image = frame.color(why);
     r.rendered = frame.rendered();
     if (!image) return verdict(r, false, expected + "Observed: " + why);
     const std::string ref_path = lab.root + "/" + lab.reference(cp.name);
     if (!std::filesystem::exists(ref_path))
-        return verdict(r, false, "missing reference " + lab.reference(cp.name) + "; run course bless");
+        return verdict(r, false,
+                       "missing reference " + lab.reference(cp.name) + "; run course bless");
     fw::Image reference;
     try {
         reference = fw::read_png(ref_path);
@@ -201,23 +205,27 @@ void judge_probe(const json& check, const RenderPlan& plan, Frame& frame, CheckR
         const fw::Image* image = frame.color(why);
         r.rendered = frame.rendered();
         if (!image) return verdict(r, false, want + "Observed: " + why);
-        if (x >= image->width || y >= image->height) return verdict(r, false, want + "Observed: outside the image");
+        if (x >= image->width || y >= image->height)
+            return verdict(r, false, want + "Observed: outside the image");
         const fw::Rgba8 p = image->at(x, y);
         const double channels[4] = {p.r / 255.0, p.g / 255.0, p.b / 255.0, p.a / 255.0};
         std::vector<double> seen(channels, channels + expected.size());
         double worst = 0.0;
-        for (size_t i = 0; i < expected.size(); ++i) worst = std::max(worst, std::fabs(seen[i] - expected[i]));
+        for (size_t i = 0; i < expected.size(); ++i)
+            worst = std::max(worst, std::fabs(seen[i] - expected[i]));
         return verdict(r, worst <= tol,
                        want + "Observed: " + tuple(seen) + ", largest difference " + num(worst));
     }
     r.title = "probe " + pixel + " depth";
     const double expected = check["depth"], tol = check.value("tolerance", 1e-5);
-    const std::string want = "Expected: depth " + num(expected) + " within " + num(tol) + " at pixel " + pixel + where + "\n";
+    const std::string want = "Expected: depth " + num(expected) + " within " + num(tol) +
+                             " at pixel " + pixel + where + "\n";
     const fw::DepthImage* depth = frame.depth(why);
     if (!depth) return verdict(r, false, want + "Observed: " + why);
     const double seen = depth->at(x, y);
-    verdict(r, std::fabs(seen - expected) <= tol,
-            want + "Observed: depth " + num(seen) + ", difference " + num(std::fabs(seen - expected)));
+    verdict(
+        r, std::fabs(seen - expected) <= tol,
+        want + "Observed: depth " + num(seen) + ", difference " + num(std::fabs(seen - expected)));
 }
 
 void judge_stat(const json& check, Frame& frame, CheckResult& r) {
@@ -229,7 +237,8 @@ void judge_stat(const json& check, Frame& frame, CheckResult& r) {
     } else if (check.contains("min") && check.contains("max")) {
         want = path + " in [" + num(check["min"]) + ", " + num(check["max"]) + "]";
     } else {
-        want = path + (check.contains("min") ? " >= " + num(check["min"]) : " <= " + num(check["max"]));
+        want = path +
+               (check.contains("min") ? " >= " + num(check["min"]) : " <= " + num(check["max"]));
     }
     r.title = "stat " + want;
     want = "Expected: " + want + "\n";
@@ -266,10 +275,11 @@ void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, uns
     size_t edges = 0;
     for (const UnitCase& c : plan.cases) edges += c.edge ? 1 : 0;
     r.title = "unit " + ref.function.name + " (" + std::to_string(plan.cases.size()) + " cases)";
-    std::string head = "seed " + std::to_string(seed) + " (COURSE_SEED=" + std::to_string(seed) +
-                       " repeats these cases): " + std::to_string(plan.cases.size() - edges) + " random and " +
-                       std::to_string(edges) + " edge cases; tolerance " + num(tol) +
-                       " (relative where |expected| > 1)\nExpected: every case equal to course's reference\n";
+    std::string head =
+        "seed " + std::to_string(seed) + " (COURSE_SEED=" + std::to_string(seed) +
+        " repeats these cases): " + std::to_string(plan.cases.size() - edges) + " random and " +
+        std::to_string(edges) + " edge cases; tolerance " + num(tol) +
+        " (relative where |expected| > 1)\nExpected: every case equal to course's reference\n";
     if (!units) return verdict(r, false, head + "Observed: no results: " + units_why);
     size_t passed = 0;
     std::string failures;
@@ -285,11 +295,13 @@ void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, uns
             why = std::string("course's reference failed: ") + e.what();
         }
         if (!why.empty()) {
+            // course's own reference failed: the case fails, saying so
         } else if (!entry.is_object() || (!entry.contains("result") && !entry.contains("error"))) {
             why = "no result for this case in units.json";
         } else if (entry.contains("error")) {
-            why = "the function failed: " + (entry["error"].is_string() ? entry["error"].get<std::string>()
-                                                                        : entry["error"].dump());
+            why = "the function failed: " + (entry["error"].is_string()
+                                                 ? entry["error"].get<std::string>()
+                                                 : entry["error"].dump());
         } else {
             ok = results_match(expected, entry["result"], tol, &why);
         }
@@ -298,14 +310,14 @@ void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, uns
         } else if (shown++ < 3) {
             std::string args;
             for (const json& a : c.args) args += (args.empty() ? "" : ", ") + compact(a, 120);
-            failures += "  " + ref.function.name + "(" + args + ")" + (c.edge ? " [edge case]" : "") +
-                        "\n    expected " + compact(expected) +
-                        "\n    observed " + (entry.contains("result") ? compact(entry["result"]) : "-") +
-                        "\n    " + why + "\n";
+            failures +=
+                "  " + ref.function.name + "(" + args + ")" + (c.edge ? " [edge case]" : "") +
+                "\n    expected " + compact(expected) + "\n    observed " +
+                (entry.contains("result") ? compact(entry["result"]) : "-") + "\n    " + why + "\n";
         }
     }
-    std::string out = head + "Observed: " + std::to_string(passed) + " of " + std::to_string(plan.cases.size()) +
-                      " cases passed";
+    std::string out = head + "Observed: " + std::to_string(passed) + " of " +
+                      std::to_string(plan.cases.size()) + " cases passed";
     if (!failures.empty()) out += "\nFirst failures:\n" + failures;
     verdict(r, passed == plan.cases.size(), out);
 }
@@ -316,7 +328,8 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
                    std::string& why) {
     const std::string name = render.checkpoint + ".png";
     // An uncompressed PNG: 4 bytes a pixel, a filter byte a row, chunk overhead.
-    const std::uint64_t limit = std::uint64_t(render.width) * render.height * 4 + render.height + kMiB;
+    const std::uint64_t limit =
+        std::uint64_t(render.width) * render.height * 4 + render.height + kMiB;
     std::string bytes;
     if (!outputs.read(name, limit, bytes, why)) return false;
     static const std::string signature = "\x89PNG\r\n\x1a\n";
@@ -327,8 +340,9 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
     // The size in the header, checked before decoding anything.
     const std::uint32_t w = be32(bytes, 16), h = be32(bytes, 20);
     if (w != std::uint32_t(render.width) || h != std::uint32_t(render.height)) {
-        why = name + " is " + std::to_string(w) + "x" + std::to_string(h) + ", but course asked for " +
-              std::to_string(render.width) + "x" + std::to_string(render.height);
+        why = name + " is " + std::to_string(w) + "x" + std::to_string(h) +
+              ", but course asked for " + std::to_string(render.width) + "x" +
+              std::to_string(render.height);
         return false;
     }
     try {
@@ -348,9 +362,9 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
     json units;
     if (!plan.units.empty()) {
         std::string bytes;
-        if (!outputs.read("units.json", 16 * kMiB, bytes, units_why)) {
-        } else if (!(units = json::parse(bytes, nullptr, false)).is_object()) {
-            units_why = "units.json is not a JSON object";
+        if (outputs.read("units.json", 16 * kMiB, bytes, units_why)) {
+            units = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+            if (!units.is_object()) units_why = "units.json is not a JSON object";
         }
     }
     std::vector<CheckResult> results;
@@ -372,7 +386,8 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
             if (result.kind == "unit")
                 for (const UnitPlan& u : plan.units)
                     if (u.checkpoint == cp.name && u.check == i)
-                        judge_unit(lab, check, u, plan.seed, units.is_object() ? &units : nullptr, units_why, result);
+                        judge_unit(lab, check, u, plan.seed, units.is_object() ? &units : nullptr,
+                                   units_why, result);
             results.push_back(std::move(result));
         }
     }

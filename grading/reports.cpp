@@ -314,7 +314,12 @@ std::string summary_table(const GradeRun& run) {
         passed += report::passed_count(lab);
         for (const CheckResult& c : lab.checks) {
             if (c.passed) continue;
-            const std::string why = report::first_line(report::check_output(lab, c));
+            // The Observed line says what went wrong; the Expected line only
+            // repeats the check. Outputs without one start with the reason.
+            const std::string output = report::check_output(lab, c);
+            const size_t observed = output.find("Observed:");
+            const std::string why =
+                report::first_line(observed == std::string::npos ? output : output.substr(observed));
             failed += "  " +
                       ascii(lab.lab + "/" + c.checkpoint + ": " + c.title +
                             (why.empty() ? "" : " - " + why)) +

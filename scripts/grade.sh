@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# README command 1: installs what is missing, builds, and renders every
-# checkpoint of every lab offscreen with the built-in solution on the default
-# backend into build/renders/<lab>/.
+# README command 1: installs what is missing, builds, and grades every lab
+# offscreen with the built-in solution on the default backend. Prints the
+# score table and leaves the reports in build/grade/ (index.html, results.json,
+# junit.xml, summary.txt). Extra arguments go to `course grade`.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/setup.sh"
-out="$root/build/renders"
-"$root/build/bin/lab" render-checkpoints --out "$out" "$@"
-echo "grade: every checkpoint rendered into $out"
+out="$root/build/grade"
+status=0
+"$root/build/bin/course" grade --out "$out" "$@" || status=$?
+echo "grade: report in $out/index.html"
+exit "$status"

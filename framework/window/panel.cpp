@@ -55,8 +55,12 @@ void param_widget(const Param& p, ParamValues& values) {
     switch (p.type) {
         case ParamType::Float: {
             double lo = p.min, hi = p.max;
+            // A positive range over several decades (near = 0.0001 .. 10) is
+            // only usable on a logarithmic slider, with significant digits.
+            const bool decades = lo > 0.0 && hi / lo >= 1000.0;
+            const ImGuiSliderFlags flags = clamp | (decades ? ImGuiSliderFlags_Logarithmic : 0);
             ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &values.number_ref(p.name),
-                                &lo, &hi, slider_format("%.3f", p.unit_text).c_str(), clamp);
+                                &lo, &hi, slider_format("%.4g", p.unit_text).c_str(), flags);
             break;
         }
         case ParamType::Int: {

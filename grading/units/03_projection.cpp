@@ -32,10 +32,10 @@ glm::vec3 ref_viewport(glm::vec3 ndc, int width, int height) {
 
 }  // namespace
 
-// The eye and the target stay at least a little apart and the up vector is a
-// random direction; the rare draws where the view is almost parallel to up
-// are as ill-conditioned for GLM as for the student, so the tolerance in
-// checkpoints.json allows for them.
+// Eye and target anywhere in a 20-unit cube, up a random direction. A draw
+// with the view almost parallel to up is ill-conditioned for GLM and the
+// student alike; lookAt's tolerance in checkpoints.json (1e-4) allows for
+// the rare ones that come close.
 COURSE_REFERENCE(projection, lookAt, &ref_lookAt,
                  {grading::vec(3, -10, 10), grading::vec(3, -10, 10), grading::unit_vec(3)})
 // Fields of view within the lab's range; far always beyond near.

@@ -35,35 +35,36 @@ json random_number(double lo, double hi, std::mt19937& rng) {
 
 json random_value(const ArgDomain& d, std::mt19937& rng) {
     switch (d.kind) {
-    case ArgDomain::Kind::Scalar:
-        return random_number(d.lo, d.hi, rng);
-    case ArgDomain::Kind::Integer:
-        return std::uniform_int_distribution<int>(static_cast<int>(d.lo), static_cast<int>(d.hi))(rng);
-    case ArgDomain::Kind::Bool:
-        return std::uniform_int_distribution<int>(0, 1)(rng) == 1;
-    case ArgDomain::Kind::Vector: {
-        json v = json::array();
-        for (int i = 0; i < d.size; ++i) v.push_back(random_number(d.lo, d.hi, rng));
-        return v;
-    }
-    case ArgDomain::Kind::UnitVector: {
-        // Normal samples normalised: uniform on the sphere. A near-zero
-        // sample is drawn again rather than divided by.
-        std::normal_distribution<double> normal;
-        for (;;) {
-            std::vector<double> v(static_cast<size_t>(d.size));
-            double len = 0.0;
-            for (double& x : v) {
-                x = normal(rng);
-                len += x * x;
-            }
-            len = std::sqrt(len);
-            if (len < 1e-6) continue;
-            json out = json::array();
-            for (double x : v) out.push_back(float_value(x / len));
-            return out;
+        case ArgDomain::Kind::Scalar:
+            return random_number(d.lo, d.hi, rng);
+        case ArgDomain::Kind::Integer:
+            return std::uniform_int_distribution<int>(static_cast<int>(d.lo),
+                                                      static_cast<int>(d.hi))(rng);
+        case ArgDomain::Kind::Bool:
+            return std::uniform_int_distribution<int>(0, 1)(rng) == 1;
+        case ArgDomain::Kind::Vector: {
+            json v = json::array();
+            for (int i = 0; i < d.size; ++i) v.push_back(random_number(d.lo, d.hi, rng));
+            return v;
         }
-    }
+        case ArgDomain::Kind::UnitVector: {
+            // Normal samples normalised: uniform on the sphere. A near-zero
+            // sample is drawn again rather than divided by.
+            std::normal_distribution<double> normal;
+            for (;;) {
+                std::vector<double> v(static_cast<size_t>(d.size));
+                double len = 0.0;
+                for (double& x : v) {
+                    x = normal(rng);
+                    len += x * x;
+                }
+                len = std::sqrt(len);
+                if (len < 1e-6) continue;
+                json out = json::array();
+                for (double x : v) out.push_back(float_value(x / len));
+                return out;
+            }
+        }
     }
     throw fw::Error("random_arguments: unknown argument domain");
 }
@@ -71,22 +72,28 @@ json random_value(const ArgDomain& d, std::mt19937& rng) {
 std::string number_text(const json& j) {
     std::ostringstream s;
     s.precision(9);
-    if (j.is_number()) s << j.get<double>();
-    else s << j.dump();
+    if (j.is_number())
+        s << j.get<double>();
+    else
+        s << j.dump();
     return s.str();
 }
 
-bool match(const json& e, const json& o, double tolerance, const std::string& where, std::string* why) {
+bool match(const json& e, const json& o, double tolerance, const std::string& where,
+           std::string* why) {
     auto fail = [&](const std::string& what) {
         if (why) *why = (where.empty() ? "" : where + ": ") + what;
         return false;
     };
     if (e.is_array()) {
-        if (!o.is_array()) return fail("expected an array of " + std::to_string(e.size()) + ", got " + o.dump());
+        if (!o.is_array())
+            return fail("expected an array of " + std::to_string(e.size()) + ", got " + o.dump());
         if (o.size() != e.size())
-            return fail("expected " + std::to_string(e.size()) + " elements, got " + std::to_string(o.size()));
+            return fail("expected " + std::to_string(e.size()) + " elements, got " +
+                        std::to_string(o.size()));
         for (size_t i = 0; i < e.size(); ++i)
-            if (!match(e[i], o[i], tolerance, where + "[" + std::to_string(i) + "]", why)) return false;
+            if (!match(e[i], o[i], tolerance, where + "[" + std::to_string(i) + "]", why))
+                return false;
         return true;
     }
     if (e.is_boolean()) {

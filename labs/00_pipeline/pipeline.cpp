@@ -86,7 +86,8 @@ std::vector<glm::vec3> expand_quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::v
     std::vector<Vertex> vertices;
     for (const glm::vec3& p : {a, b, c, d}) vertices.push_back({p, glm::vec3(0.0f)});
     std::vector<glm::vec3> positions;
-    for (const Vertex& v : expand_indices(vertices, {0, 1, 2, 0, 2, 3})) positions.push_back(v.position);
+    for (const Vertex& v : expand_indices(vertices, {0, 1, 2, 0, 2, 3}))
+        positions.push_back(v.position);
     return positions;
 }
 

@@ -51,7 +51,8 @@ glm::mat4 perspective(float fovy_deg, float aspect, float n, float f) {
 glm::mat4 orthographic(float l, float r, float b, float t, float n, float f) {
     // BEGIN SOLUTION
     // STUDENT: (void)l, (void)r, (void)b, (void)t, (void)n, (void)f;
-    // STUDENT: return glm::mat4(1.0f);  // TODO: scale the box to [-1, 1]^3 after moving its centre to 0
+    // STUDENT: return glm::mat4(1.0f);  // TODO: scale the box to [-1, 1]^3 after moving its centre
+    // to 0
     glm::mat4 O(1.0f);
     O[0][0] = 2.0f / (r - l);
     O[1][1] = 2.0f / (t - b);

@@ -28,6 +28,15 @@ namespace {
 // The same number as `layout(location = 0)` in shaders/03_projection/
 // projection.vert: change both or neither.
 constexpr GLuint kPositionLocation = 0;
+// Uniforms of projection.vert (the matrices) and projection.frag.
+constexpr const char* kModelUniform = "u_model";
+constexpr const char* kViewUniform = "u_view";
+constexpr const char* kProjectionUniform = "u_projection";
+constexpr const char* kColorUniform = "u_color";
+constexpr const char* kShowDepthUniform = "u_show_depth";
+constexpr const char* kOrthographicUniform = "u_orthographic";
+constexpr const char* kNearUniform = "u_near";
+constexpr const char* kFarUniform = "u_far";
 
 const glm::vec3 kUp{0.0f, 1.0f, 0.0f};
 
@@ -125,12 +134,12 @@ public:
     }
 
     void init(fw::ProgramLibrary& programs) override {
-        program_ = &programs.load({"03_projection/projection.vert", "03_projection/projection.frag"});
+        program_ =
+            &programs.load({"03_projection/projection.vert", "03_projection/projection.frag"});
         square_vbo_ = fw::Buffer::from(unit_square(), GL_ARRAY_BUFFER, "unit square");
-        square_ = fw::VertexArray({&square_vbo_,
-                                   fw::VertexLayout::of<Vertex>().attr(kPositionLocation,
-                                                                       &Vertex::position),
-                                   nullptr, GL_UNSIGNED_INT, "unit square"});
+        const fw::VertexLayout layout =
+            fw::VertexLayout::of<Vertex>().attr(kPositionLocation, &Vertex::position);
+        square_ = fw::VertexArray({&square_vbo_, layout, nullptr, GL_UNSIGNED_INT, "unit square"});
     }
 
     void draw(const fw::ParamValues& p, const fw::Frame& frame) override {
@@ -141,15 +150,15 @@ public:
         glDisable(GL_CULL_FACE);
 
         program_->use();
-        program_->set("u_view", view_matrix(p));
-        program_->set("u_projection", projection_matrix(p, aspect));
-        program_->set("u_show_depth", p.choice("show") == "depth");
-        program_->set("u_orthographic", p.choice("mode") == "orthographic");
-        program_->set("u_near", p.number("near"));
-        program_->set("u_far", p.number("far"));
+        program_->set(kViewUniform, view_matrix(p));
+        program_->set(kProjectionUniform, projection_matrix(p, aspect));
+        program_->set(kShowDepthUniform, p.choice("show") == "depth");
+        program_->set(kOrthographicUniform, p.choice("mode") == "orthographic");
+        program_->set(kNearUniform, p.number("near"));
+        program_->set(kFarUniform, p.number("far"));
         for (const Object& object : scene_objects(p.choice("scene"))) {
-            program_->set("u_model", object.model);
-            program_->set("u_color", object.color);
+            program_->set(kModelUniform, object.model);
+            program_->set(kColorUniform, object.color);
             square_.draw(GL_TRIANGLES, static_cast<GLsizei>(square_.vertex_count()));
         }
     }
@@ -163,7 +172,8 @@ public:
         nlohmann::json centres = nlohmann::json::array();
         for (const Object& object : scene_objects(p.choice("scene"))) {
             const glm::vec4 clip = clip_from_world * object.model * glm::vec4(0, 0, 0, 1);
-            const glm::vec3 window = viewport(glm::vec3(clip) / clip.w, frame_.width, frame_.height);
+            const glm::vec3 window =
+                viewport(glm::vec3(clip) / clip.w, frame_.width, frame_.height);
             centres.push_back({{"object", object.name},
                                {"clip", {clip.x, clip.y, clip.z, clip.w}},
                                {"window", {window.x, window.y, window.z}}});
@@ -198,9 +208,9 @@ public:
         if (r == 0.0) return false;
         const double yaw = std::atan2(offset.x, offset.z) - 0.01 * dx;
         const double pitch = std::clamp(std::asin(offset.y / r) - 0.01 * dy, -1.5, 1.5);
-        const glm::dvec3 eye = target + r * glm::dvec3(std::cos(pitch) * std::sin(yaw),
-                                                       std::sin(pitch),
-                                                       std::cos(pitch) * std::cos(yaw));
+        const glm::dvec3 eye =
+            target + r * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                    std::cos(pitch) * std::cos(yaw));
         set_clamped(p, "eye_x", eye.x);
         set_clamped(p, "eye_y", eye.y);
         set_clamped(p, "eye_z", eye.z);

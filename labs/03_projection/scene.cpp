@@ -27,8 +27,8 @@ std::vector<Object> cards() {
         // 0.15: every card covers the same 0.3 x 0.3 of NDC, however far.
         const glm::vec3 centre(u[i] * d[i] * t, 0.0f, -d[i]);
         const float half = 0.15f * d[i] * t;
-        const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), centre),
-                                           glm::vec3(half, half, 1.0f));
+        const glm::mat4 model =
+            glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(half, half, 1.0f));
         out.push_back({names[i], model, colors[i]});
     }
     return out;
@@ -58,7 +58,8 @@ std::vector<Vertex> unit_square() {
 std::vector<Object> scene_objects(const std::string& scene) {
     if (scene == "cards") return cards();
     if (scene == "zfight") return zfight_quads();
-    throw fw::UsageError("lab projection: unknown scene '" + scene + "'; the scenes are: cards, zfight");
+    throw fw::UsageError("lab projection: unknown scene '" + scene +
+                         "'; the scenes are: cards, zfight");
 }
 
 }  // namespace projection

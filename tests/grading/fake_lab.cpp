@@ -7,6 +7,7 @@
 //   hang        never returns (course's timeout must end it)
 //   spew        writes to stdout without end
 //   bigfile     writes one file past course's per-file limit
+//   fill        writes 1 MiB files without end (course's work directory cap)
 //   garbage     text where the PNGs, depth, stats and units.json belong; the
 //               first PNG has a valid header claiming 100000 x 100000 pixels
 //   liar        black frames, stats and units.json claiming a perfect score
@@ -19,13 +20,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <nlohmann/json.hpp>
-
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -68,11 +68,13 @@ bool nudge(json& j) {
 
 void snoop(const std::string& read_path, const std::string& write_dir) {
     int fd = open(read_path.c_str(), O_RDONLY);
-    std::printf("snoop: read %s: %s\n", read_path.c_str(), fd >= 0 ? "ALLOWED" : std::strerror(errno));
+    std::printf("snoop: read %s: %s\n", read_path.c_str(),
+                fd >= 0 ? "ALLOWED" : std::strerror(errno));
     if (fd >= 0) close(fd);
     const std::string target = write_dir + "/planted.txt";
     fd = open(target.c_str(), O_WRONLY | O_CREAT, 0644);
-    std::printf("snoop: write %s: %s\n", target.c_str(), fd >= 0 ? "ALLOWED" : std::strerror(errno));
+    std::printf("snoop: write %s: %s\n", target.c_str(),
+                fd >= 0 ? "ALLOWED" : std::strerror(errno));
     if (fd >= 0) close(fd);
 }
 
@@ -110,16 +112,20 @@ int main(int argc, char** argv) {
         std::signal(SIGXFSZ, SIG_DFL);
         std::ofstream big(out + "/big.bin", std::ios::binary);
         const std::string chunk(1 << 20, 'x');
-        for (int i = 0; i < 1024 && big; ++i) big.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        for (int i = 0; i < 1024 && big; ++i)
+            big.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    } else if (mode == "fill") {
+        const std::string chunk(1 << 20, 'x');
+        for (long i = 0;; ++i) std::ofstream(out + "/fill" + std::to_string(i) + ".bin") << chunk;
     } else if (mode == "garbage") {
         bool first = true;
         for (const json& r : renders) {
             const std::string base = out + "/" + r.value("name", "");
             if (first) {
                 // Signature and IHDR of a 100000 x 100000 image, then nothing.
-                const unsigned char header[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13,
-                                                'I', 'H', 'D', 'R', 0, 1, 0x86, 0xa0, 0, 1, 0x86, 0xa0,
-                                                8, 6, 0, 0, 0};
+                const unsigned char header[] = {
+                    0x89, 'P', 'N', 'G',  '\r', '\n', 0x1a, '\n', 0,    0, 0, 13, 'I', 'H', 'D',
+                    'R',  0,   1,   0x86, 0xa0, 0,    1,    0x86, 0xa0, 8, 6, 0,  0,   0};
                 std::ofstream(base + ".png", std::ios::binary)
                     .write(reinterpret_cast<const char*>(header), sizeof header);
             } else {
@@ -133,19 +139,25 @@ int main(int argc, char** argv) {
     } else if (mode == "liar") {
         for (const json& r : renders) {
             const std::string base = out + "/" + r.value("name", "");
-            fw::write_png(base + ".png", fw::Image(r.value("width", 512), r.value("height", 512), {0, 0, 0, 255}));
+            fw::write_png(base + ".png",
+                          fw::Image(r.value("width", 512), r.value("height", 512), {0, 0, 0, 255}));
             write_text(base + ".stats.json", json{{"params", r.value("params", json::object())},
-                                                  {"passed", true}, {"score", 1000},
-                                                  {"primitives_generated", 0}}.dump());
+                                                  {"passed", true},
+                                                  {"score", 1000},
+                                                  {"primitives_generated", 0}}
+                                                 .dump());
         }
         json claims = json::object();
-        for (const json& u : units) claims[u.value("id", "")] = {{"result", "perfect"}, {"passed", true}};
+        for (const json& u : units)
+            claims[u.value("id", "")] = {{"result", "perfect"}, {"passed", true}};
         write_text(out + "/units.json", claims.dump());
-        write_text(out + "/child.json", json{{"complete", true}, {"all_checks_passed", true}}.dump());
+        write_text(out + "/child.json",
+                   json{{"complete", true}, {"all_checks_passed", true}}.dump());
     } else if (mode == "symlink") {
         for (const json& r : renders) {
             const std::string name = r.value("name", "") + ".png";
-            if (symlink((env("FAKE_LAB_REFERENCES") + "/" + name).c_str(), (out + "/" + name).c_str()) != 0)
+            if (symlink((env("FAKE_LAB_REFERENCES") + "/" + name).c_str(),
+                        (out + "/" + name).c_str()) != 0)
                 std::perror("fake_lab: symlink");
         }
     } else if (mode == "wrong_unit") {

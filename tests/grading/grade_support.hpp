@@ -2,12 +2,11 @@
 // trees for LAB_ROOT, and reading the reports back.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "tests/support/test_support.hpp"
@@ -31,12 +30,14 @@ struct Graded {
 inline Graded grade(const std::string& env, const std::string& args, const std::string& out) {
     fs::remove_all(out);
     const auto start = std::chrono::steady_clock::now();
-    fw::test::CommandResult r = fw::test::run_command(env + " " + course() + " grade " + args + " --out " + out);
+    fw::test::CommandResult r =
+        fw::test::run_command(env + " " + course() + " grade " + args + " --out " + out);
     Graded g;
     g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     g.exit_code = r.exit_code;
     g.output = r.output;
-    MESSAGE("course grade " << args << ": exit " << r.exit_code << " after " << g.seconds << " s\n" << r.output);
+    MESSAGE("course grade " << args << ": exit " << r.exit_code << " after " << g.seconds << " s\n"
+                            << r.output);
     std::ifstream in(out + "/results.json");
     if (in) g.results = json::parse(in, nullptr, false);
     return g;
@@ -64,7 +65,8 @@ inline std::string make_tree(const std::string& dir, bool hostile) {
     const fs::path src = fs::path(fw::test::source_dir()) / "labs/00_pipeline";
     fs::create_directories(dir + "/labs/00_pipeline");
     fs::copy_file(src / "checkpoints.json", dir + "/labs/00_pipeline/checkpoints.json");
-    if (fs::exists(src / "reference")) fs::copy(src / "reference", dir + "/labs/00_pipeline/reference");
+    if (fs::exists(src / "reference"))
+        fs::copy(src / "reference", dir + "/labs/00_pipeline/reference");
     if (!hostile) return dir;
     std::string checkpoints;
     for (const char* name : {"frame", "frame2"}) {
@@ -74,7 +76,8 @@ inline std::string make_tree(const std::string& dir, bool hostile) {
      {"kind": "probe", "at": [1, 1], "color": [0, 0, 0], "points": 1},
      {"kind": "stat", "stat": "primitives_generated", "equals": 0, "points": 1}]})";
         fs::create_directories(dir + "/labs/01_hostile/reference");
-        fw::write_png(dir + "/labs/01_hostile/reference/" + name + ".png", fw::Image(64, 64, {0, 0, 0, 255}));
+        fw::write_png(dir + "/labs/01_hostile/reference/" + name + ".png",
+                      fw::Image(64, 64, {0, 0, 0, 255}));
     }
     write_file(dir + "/labs/01_hostile/checkpoints.json",
                "{\"lab\": \"hostile\", \"checkpoints\": [\n" + checkpoints + "]}\n");
@@ -88,7 +91,8 @@ inline void check_reports(const std::string& out, size_t checks) {
         CHECK(fs::exists(out + "/" + file));
     }
     std::ifstream html(out + "/index.html"), junit(out + "/junit.xml");
-    std::string h((std::istreambuf_iterator<char>(html)), {}), j((std::istreambuf_iterator<char>(junit)), {});
+    std::string h((std::istreambuf_iterator<char>(html)), {}),
+        j((std::istreambuf_iterator<char>(junit)), {});
     CHECK(h.find("</html>") != std::string::npos);
     CHECK(j.find("</testsuites>") != std::string::npos);
     std::ifstream in(out + "/results.json");
@@ -116,8 +120,8 @@ inline double points(const json& checks) {
 // Whether `lab` can render on `backend` here; `why` gets the reason if not.
 inline bool backend_available(const std::string& backend, std::string& why) {
     const std::string png = fw::test::out_dir() + "/probe_" + backend + ".png";
-    fw::test::CommandResult r = fw::test::run_command(fw::test::bin_dir() + "/lab render pipeline --backend " +
-                                                      backend + " -o " + png);
+    fw::test::CommandResult r = fw::test::run_command(
+        fw::test::bin_dir() + "/lab render pipeline --backend " + backend + " -o " + png);
     why = r.output;
     return r.exit_code == 0;
 }

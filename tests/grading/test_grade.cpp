@@ -28,7 +28,8 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
         std::string why;
         if (!backend_available(backend, why)) {
             if (backend_required(backend))
-                FAIL_CHECK("backend " << backend << " is required (LAB_REQUIRE_BACKENDS) but: " << why);
+                FAIL_CHECK("backend " << backend
+                                      << " is required (LAB_REQUIRE_BACKENDS) but: " << why);
             else
                 MESSAGE("SKIP backend " << backend << ": " << why);
             continue;
@@ -49,8 +50,10 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
         }
         const json* unit = find_named(g.results["tests"], "unit expand_quad");
         REQUIRE(unit);
-        CHECK((*unit)["output"].get<std::string>().find("102 of 102 cases passed") != std::string::npos);
-        for (const char* image : {"order_depth.png", "order_depth.expected.png", "order_depth.diff.png"}) {
+        CHECK((*unit)["output"].get<std::string>().find("102 of 102 cases passed") !=
+              std::string::npos);
+        for (const char* image :
+             {"order_depth.png", "order_depth.expected.png", "order_depth.diff.png"}) {
             CAPTURE(image);
             CHECK(fs::exists(out + "/pipeline/" + image));
         }
@@ -64,7 +67,8 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
 
 TEST_CASE("course grade --jobs 2 gives the same results as --jobs 1") {
     const std::string tree = make_tree(fw::test::out_dir() + "/tree", /*hostile=*/true);
-    const std::string env = "LAB_ROOT=" + tree + " COURSE_SEED=1234 FAKE_LAB_TARGET=hostile FAKE_LAB_MODE=liar";
+    const std::string env =
+        "LAB_ROOT=" + tree + " COURSE_SEED=1234 FAKE_LAB_TARGET=hostile FAKE_LAB_MODE=liar";
     Graded one = grade(env, "--lab " + fake_lab() + " --jobs 1", fw::test::out_dir() + "/jobs1");
     Graded two = grade(env, "--lab " + fake_lab() + " --jobs 2", fw::test::out_dir() + "/jobs2");
     CHECK(one.exit_code == 0);  // the liar's black frames are exactly what "hostile" expects
@@ -97,22 +101,31 @@ TEST_CASE("course grade: usage and set-up errors exit 2 and say what would fix t
     }
 }
 
-TEST_CASE("course grade: a malformed check stops the run before any child, naming file, checkpoint and field") {
-    const std::string good = R"({"kind": "probe", "at": [256, 256], "color": [0, 0, 1], "tolerance": 0.01, "points": 2})";
+TEST_CASE(
+    "course grade: a malformed check stops the run before any child, naming file, checkpoint and "
+    "field") {
+    const std::string good =
+        R"({"kind": "probe", "at": [256, 256], "color": [0, 0, 1], "tolerance": 0.01, "points": 2})";
     struct Case {
         std::string check;
         std::vector<std::string> needles;
     };
     const Case cases[] = {
-        {R"({"kind": "histogram", "points": 2})", {"\"kind\"", "histogram", "image, probe, stat, unit"}},
-        {R"({"kind": "probe", "at": [256, 256], "colour": [0, 0, 1], "points": 2})", {"\"colour\"", "not a field"}},
+        {R"({"kind": "histogram", "points": 2})",
+         {"\"kind\"", "histogram", "image, probe, stat, unit"}},
+        {R"({"kind": "probe", "at": [256, 256], "colour": [0, 0, 1], "points": 2})",
+         {"\"colour\"", "not a field"}},
         {R"({"kind": "probe", "at": [256, 256], "color": [0, 0, 1], "tolerance": "small", "points": 2})",
          {"\"tolerance\"", "\"small\""}},
-        {R"({"kind": "probe", "at": [600, 256], "color": [0, 0, 1], "points": 2})", {"\"at\"", "512x512"}},
+        {R"({"kind": "probe", "at": [600, 256], "color": [0, 0, 1], "points": 2})",
+         {"\"at\"", "512x512"}},
         {R"({"kind": "probe", "at": [256, 256], "color": [0, 0, 1]})", {"\"points\"", "missing"}},
-        {R"({"kind": "stat", "stat": "primitives_generated", "points": 1})", {"\"equals\"", "missing"}},
-        {R"({"kind": "unit", "function": "expand_quads", "points": 2})", {"\"function\"", "expand_quad"}},
-        {R"({"kind": "unit", "function": "expand_quad", "edge": [[1, 2]], "points": 2})", {"\"edge\"", "[1,2]"}},
+        {R"({"kind": "stat", "stat": "primitives_generated", "points": 1})",
+         {"\"equals\"", "missing"}},
+        {R"({"kind": "unit", "function": "expand_quads", "points": 2})",
+         {"\"function\"", "expand_quad"}},
+        {R"({"kind": "unit", "function": "expand_quad", "edge": [[1, 2]], "points": 2})",
+         {"\"edge\"", "[1,2]"}},
     };
     for (const Case& c : cases) {
         CAPTURE(c.check);
@@ -138,30 +151,34 @@ TEST_CASE("course grade: a malformed check stops the run before any child, namin
 TEST_CASE("course grade: a unit check fails when the child returns wrong results") {
     const json checks = lab0_checks();
     double unit_points = 0;
-    for (const json& c : checks) unit_points += c["kind"] == "unit" ? c["points"].get<double>() : 0.0;
+    for (const json& c : checks)
+        unit_points += c["kind"] == "unit" ? c["points"].get<double>() : 0.0;
     REQUIRE(unit_points > 0);
-    Graded g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=wrong_unit", "pipeline --lab " + fake_lab(),
-                     fw::test::out_dir() + "/report");
+    Graded g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=wrong_unit",
+                     "pipeline --lab " + fake_lab(), fw::test::out_dir() + "/report");
     CHECK(g.exit_code == 1);
     REQUIRE(g.results.is_object());
     CHECK(g.results["score"].get<double>() == points(checks) - unit_points);
     const json* unit = find_named(g.results["tests"], "unit expand_quad");
     REQUIRE(unit);
     CHECK((*unit)["status"] == "failed");
-    fw::test::check_mentions((*unit)["output"].get<std::string>(), {"seed", "0 of 102 cases passed", "expand_quad(", "expected",
-                                                 "observed", "[edge case]"});
+    fw::test::check_mentions(
+        (*unit)["output"].get<std::string>(),
+        {"seed", "0 of 102 cases passed", "expand_quad(", "expected", "observed", "[edge case]"});
 }
 
 TEST_CASE("course bless writes the references that course grade then accepts") {
     std::string why;
     if (!backend_available("osmesa", why)) {
-        if (backend_required("osmesa")) FAIL("osmesa is required (LAB_REQUIRE_BACKENDS) but: " << why);
+        if (backend_required("osmesa"))
+            FAIL("osmesa is required (LAB_REQUIRE_BACKENDS) but: " << why);
         std::printf("SKIP: course bless renders on osmesa, which is missing: %s\n", why.c_str());
         std::exit(77);
     }
     const std::string tree = make_tree(fw::test::out_dir() + "/tree", false);
     fs::remove_all(tree + "/labs/00_pipeline/reference");
-    fw::test::CommandResult r = fw::test::run_command("LAB_ROOT=" + tree + " " + course() + " bless pipeline");
+    fw::test::CommandResult r =
+        fw::test::run_command("LAB_ROOT=" + tree + " " + course() + " bless pipeline");
     MESSAGE(r.output);
     CHECK(r.exit_code == 0);
     int images = 0;
@@ -171,12 +188,64 @@ TEST_CASE("course bless writes the references that course grade then accepts") {
         written += e.path().extension() == ".png";
     CHECK(written == images);  // one image check per checkpoint in lab 0
     CHECK(r.output.find("wrote labs/00_pipeline/reference/order_depth.png") != std::string::npos);
-    Graded g = grade("LAB_ROOT=" + tree, "pipeline --backend osmesa", fw::test::out_dir() + "/report");
+    Graded g =
+        grade("LAB_ROOT=" + tree, "pipeline --backend osmesa", fw::test::out_dir() + "/report");
     CHECK(g.exit_code == 0);
 
     // A child that dies writes nothing and fails the command.
-    r = fw::test::run_command("LAB_ROOT=" + tree + " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=segv " + course() +
-                              " bless pipeline --lab " + fake_lab());
+    r = fw::test::run_command("LAB_ROOT=" + tree + " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=segv " +
+                              course() + " bless pipeline --lab " + fake_lab());
     CHECK(r.exit_code == 2);
     fw::test::check_mentions(r.output, {"crashed (signal 11, SIGSEGV)", "nothing written"});
+}
+
+TEST_CASE("course grade: NDC and depth probes and stat ranges, judged from the sheet's numbers") {
+    // Lab 0, scene=order, identity MVP: the blue quad at z = -0.5 covers NDC
+    // (0.4, 0.4), the red quad at z = 0.5 pixel (153, 153); window depth is
+    // (z + 1) / 2, so 0.25 and 0.75; the background keeps the clear depth 1.
+    // The scene draws 4 triangles.
+    const std::string tree = make_tree(fw::test::out_dir() + "/tree", false);
+    const std::string file = tree + "/labs/00_pipeline/checkpoints.json";
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    const std::string anchor = R"({"kind": "image", "points": 2},)";
+    const size_t at = text.find(anchor);
+    REQUIRE(at != std::string::npos);
+    text.insert(at + anchor.size(), R"(
+     {"kind": "probe", "ndc": [0, 0], "color": [0, 0, 1], "points": 1},
+     {"kind": "probe", "ndc": [0.4, 0.4], "depth": 0.25, "points": 1},
+     {"kind": "probe", "at": [153, 153], "depth": 0.75, "points": 1},
+     {"kind": "probe", "at": [51, 460], "depth": 0.5, "points": 1},
+     {"kind": "stat", "stat": "primitives_generated", "min": 1, "max": 4, "points": 1},
+     {"kind": "stat", "stat": "primitives_generated", "max": 3, "points": 1},
+     {"kind": "stat", "stat": "lab_stats.nothing", "equals": 1, "points": 1},)");
+    write_file(file, text);
+    Graded g = grade("LAB_ROOT=" + tree, "pipeline", fw::test::out_dir() + "/report");
+    CHECK(g.exit_code == 1);
+    REQUIRE(g.results.is_object());
+    struct Expect {
+        std::string name;
+        bool passed;
+        std::string output;
+    };
+    const Expect expected[] = {
+        {"order_depth / probe (256, 256) colour", true, "(NDC (0, 0))"},
+        {"order_depth / probe (358, 358) depth", true, "Expected: depth 0.25 within 1e-05"},
+        {"order_depth / probe (153, 153) depth", true, "Observed: depth 0.75"},
+        {"order_depth / probe (51, 460) depth", false, "Observed: depth 1, difference 0.5"},
+        {"order_depth / stat primitives_generated in [1, 4]", true,
+         "Observed: primitives_generated = 4"},
+        {"order_depth / stat primitives_generated <= 3", false,
+         "Observed: primitives_generated = 4"},
+        {"order_depth / stat lab_stats.nothing == 1", false,
+         "the frame's stats have no lab_stats.nothing"},
+    };
+    for (const Expect& e : expected) {
+        CAPTURE(e.name);
+        const json* t = find_named(g.results["tests"], e.name);
+        REQUIRE(t);
+        CHECK(((*t)["status"] == "passed") == e.passed);
+        fw::test::check_mentions((*t)["output"].get<std::string>(), {e.output});
+    }
+    CHECK(g.results["score"].get<double>() == points(lab0_checks()) + 4);
 }

@@ -1,5 +1,5 @@
 // `course grade` against hostile children (SPEC.md, `course grade`): a crash,
-// a hang, a flood of output, an oversized file, garbage, links to the
+// a hang, a flood of output, an oversized file, a full disk, garbage, links to the
 // references, and a child that claims a perfect score. Each fails exactly the
 // checks of its own lab with the reason, the reports are complete, and the
 // other lab, graded in the same run, keeps full marks.
@@ -22,20 +22,35 @@ struct Misbehaviour {
 
 }  // namespace
 
-TEST_CASE("course grade: a hostile child fails its own lab's checks, with the reason, and nothing else") {
+TEST_CASE(
+    "course grade: a hostile child fails its own lab's checks, with the reason, and nothing else") {
     const std::string tree = make_tree(fw::test::out_dir() + "/tree", /*hostile=*/true);
     const size_t pipeline_checks = lab0_checks().size();
     const std::vector<Misbehaviour> cases = {
-        {"segv", "crashed (signal 11, SIGSEGV)", {"the child crashed (signal 11, SIGSEGV) before writing frame"}, {}},
+        {"segv",
+         "crashed (signal 11, SIGSEGV)",
+         {"the child crashed (signal 11, SIGSEGV) before writing frame"},
+         {}},
         {"hang", "timed out after 2 s", {"the child timed out after 2 s before writing"}, {}},
-        {"spew", "wrote more than 8 MiB to stdout/stderr", {"wrote more than 8 MiB to stdout/stderr"}, {}},
+        {"spew",
+         "wrote more than 8 MiB to stdout/stderr",
+         {"wrote more than 8 MiB to stdout/stderr"},
+         {}},
         {"bigfile", "SIGXFSZ", {"SIGXFSZ", "64 MiB"}, {}},
-        {"garbage", "ok", {},
+        {"fill",
+         "wrote more than 256 MiB into its work directory",
+         {"256 MiB into its work directory"},
+         {}},
+        {"garbage",
+         "ok",
+         {},
          {{"frame / image", "frame.png is 100000x100000, but course asked for 64x64"},
           {"frame2 / image", "frame2.png is not a PNG: it starts with \"garbage instead"},
           {"frame2 / probe", "frame2.png is not a PNG"},
           {"frame / stat", "frame.stats.json is not a JSON object"}}},
-        {"symlink", "ok", {},
+        {"symlink",
+         "ok",
+         {},
          {{"frame / image", "frame.png is not a regular file"},
           {"frame2 / probe", "frame2.png is not a regular file"},
           {"frame / stat", "exited normally without writing frame.stats.json"}}},
@@ -43,12 +58,17 @@ TEST_CASE("course grade: a hostile child fails its own lab's checks, with the re
     for (const Misbehaviour& m : cases) {
         CAPTURE(m.mode);
         const std::string out = fw::test::out_dir() + "/" + m.mode;
-        const std::string env = "LAB_ROOT=" + tree + " FAKE_LAB_TARGET=hostile FAKE_LAB_MODE=" + m.mode +
+        // Short for the hang; long enough elsewhere for the cap to act first
+        // on a busy machine.
+        const std::string timeout = m.mode == "hang" ? " --timeout 2" : " --timeout 60";
+        const std::string env = "LAB_ROOT=" + tree +
+                                " FAKE_LAB_TARGET=hostile FAKE_LAB_MODE=" + m.mode +
                                 " FAKE_LAB_REFERENCES=" + tree + "/labs/01_hostile/reference";
-        Graded g = grade(env, "--lab " + fake_lab() + " --timeout 2 --jobs 2", out);
+        Graded g = grade(env, "--lab " + fake_lab() + " --jobs 2" + timeout, out);
         CHECK(g.exit_code == 1);
         CHECK(g.output.find(m.status) != std::string::npos);
-        if (m.mode == "spew") CHECK_MESSAGE(g.seconds < 15, "killed at the cap, not after a long flood");
+        if (m.mode == "spew")
+            CHECK_MESSAGE(g.seconds < 15, "killed at the cap, not after a long flood");
         check_reports(out, pipeline_checks + 6);
 
         const json pipeline = lab_tests(g.results, "pipeline");
@@ -67,7 +87,8 @@ TEST_CASE("course grade: a hostile child fails its own lab's checks, with the re
             for (const std::string& s : m.every) CHECK(output.find(s) != std::string::npos);
             for (const auto& [name, s] : m.specific)
                 if (t["name"].get<std::string>().find(name) != std::string::npos)
-                    CHECK_MESSAGE(output.find(s) != std::string::npos, "expected the output to mention: " << s);
+                    CHECK_MESSAGE(output.find(s) != std::string::npos,
+                                  "expected the output to mention: " << s);
         }
     }
 }
@@ -87,8 +108,9 @@ TEST_CASE("course grade: a child's claims count for nothing; only its raw output
             if (c["kind"] == "probe" && c.contains("color") && c["color"] == json::array({0, 0, 0}))
                 black += c["points"].get<double>();
             if (c["kind"] == "image" &&
-                fw::compare_images(blank, fw::read_png(fw::test::source_dir() + "/labs/00_pipeline/reference/" +
-                                                       cp["name"].get<std::string>() + ".png"))
+                fw::compare_images(
+                    blank, fw::read_png(fw::test::source_dir() + "/labs/00_pipeline/reference/" +
+                                        cp["name"].get<std::string>() + ".png"))
                     .passed) {
                 MESSAGE("a black frame passes the image check of " << cp["name"]);
                 black += c["points"].get<double>();

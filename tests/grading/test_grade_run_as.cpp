@@ -52,13 +52,16 @@ TEST_CASE("course grade --run-as nobody: the child cannot read a reference or wr
     const std::string out = fw::test::out_dir() + "/report";
     const std::string reference = tree + "/labs/00_pipeline/reference/order_depth.png";
     REQUIRE(fs::exists(reference));
-    Graded g = grade("LAB_ROOT=" + tree + " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=snoop FAKE_LAB_SNOOP_READ=" +
-                         reference + " FAKE_LAB_SNOOP_WRITE=" + out,
-                     "pipeline --run-as nobody --lab " + fake_lab(), out);
+    Graded g =
+        grade("LAB_ROOT=" + tree +
+                  " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=snoop FAKE_LAB_SNOOP_READ=" + reference +
+                  " FAKE_LAB_SNOOP_WRITE=" + out,
+              "pipeline --run-as nobody --lab " + fake_lab(), out);
     CHECK(g.exit_code == 1);
     // The fake's own report of what it tried, from the log course prints.
-    fw::test::check_mentions(g.output, {"exit status 3", "snoop: read " + reference + ": Permission denied",
-                                        "snoop: write " + out + "/planted.txt: Permission denied"});
+    fw::test::check_mentions(g.output,
+                             {"exit status 3", "snoop: read " + reference + ": Permission denied",
+                              "snoop: write " + out + "/planted.txt: Permission denied"});
     CHECK(g.output.find("ALLOWED") == std::string::npos);
     CHECK(!fs::exists(out + "/planted.txt"));
 }
@@ -70,8 +73,8 @@ TEST_CASE("course grade --run-as: an output directory the user could write is re
     fs::remove_all(out);
     fs::create_directories(out);
     chmod(out.c_str(), 0777);
-    const fw::test::CommandResult r = fw::test::run_command("LAB_ROOT=" + tree + " " + course() +
-                                                            " grade pipeline --run-as nobody --out " + out);
+    const fw::test::CommandResult r = fw::test::run_command(
+        "LAB_ROOT=" + tree + " " + course() + " grade pipeline --run-as nobody --out " + out);
     CHECK(r.exit_code == 2);
     fw::test::check_mentions(r.output, {"could write the output directory", out});
 }

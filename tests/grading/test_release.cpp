@@ -269,3 +269,42 @@ TEST_CASE("release: a tree outside git: files, modes, hidden references, build f
         thrown([&] { grading::release_tree((dir / "nowhere").string(), out2.string()); }),
         {(dir / "nowhere").string()});
 }
+
+// This repository's own markers, checked in milliseconds rather than by the
+// end-to-end release test; and no solution line quoted where `course release`
+// copies text as is (READMEs, data files).
+TEST_CASE("release: this repository's markers are well formed and its docs quote no solution") {
+    const fs::path root = fw::test::source_dir();
+    std::vector<std::pair<std::string, std::string>> solution_lines;  // file:line, text
+    std::vector<std::string> docs;
+    for (const std::string& file : grading::project_files(root.string())) {
+        const std::string ext = fs::path(file).extension().string();
+        if (ext == ".md" || ext == ".txt" || ext == ".json" || ext == ".html") docs.push_back(file);
+        if (!grading::is_marked_source(file) || !fs::is_regular_file(root / file)) continue;
+        const std::string text = read(root / file);
+        std::vector<grading::SolutionBlock> blocks;
+        try {
+            blocks = grading::solution_blocks(text, file);
+        } catch (const fw::Error& e) {
+            FAIL_CHECK(e.what());
+        }
+        std::vector<std::string> lines;
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        for (const auto& b : blocks)
+            for (int n = b.begin_line + 1; n < b.end_line; ++n) {
+                std::string t = lines[n - 1];
+                t.erase(0, t.find_first_not_of(" \t"));
+                // Long code lines only: short ones ("return P;") occur anywhere.
+                if (t.size() >= 30 && t.rfind("//", 0) != 0)
+                    solution_lines.push_back({file + ":" + std::to_string(n), t});
+            }
+    }
+    MESSAGE(solution_lines.size() << " long solution lines, " << docs.size() << " documents");
+    for (const std::string& doc : docs) {
+        const std::string text = read(root / doc);
+        for (const auto& [where, line] : solution_lines)
+            CHECK_MESSAGE(text.find(line) == std::string::npos,
+                          doc << " quotes the solution line " << where << ": " << line);
+    }
+}

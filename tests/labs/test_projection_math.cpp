@@ -1,13 +1,17 @@
-// Lab 3 `projection`, the student functions without GL: each against GLM
-// (glm::lookAt, glm::perspective in radians, glm::ortho, glm::perspectiveRH_ZO,
+// Lab 3 `projection` without rendering: the declaration, the window's mouse
+// controls, and the student functions, each against GLM (glm::lookAt,
+// glm::perspective in radians, glm::ortho, glm::perspectiveRH_ZO,
 // glm::project) on edge cases and on 1000 random inputs from a fixed seed,
 // plus the lecture's own cases computed in closed form.
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
+#include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
+#include "framework/lab.hpp"
 #include "labs/03_projection/camera_math.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -54,11 +58,11 @@ Frustum random_frustum(std::mt19937& rng) {
     return {fov(rng), aspect(rng), near, near + extra(rng)};
 }
 const Frustum kEdgeFrustums[] = {
-    {60, 1, 1, 50},         // the lab's defaults
-    {90, 1, 0.1f, 100},     // cot(45 deg) = 1
-    {10, 4, 0.0001f, 1000}, // narrow, wide, the smallest near
-    {150, 0.25f, 9, 10},    // wide, tall, a thin slab
-    {60, 1.5f, 0.001f, 50}, // the z-fighting near plane
+    {60, 1, 1, 50},          // the lab's defaults
+    {90, 1, 0.1f, 100},      // cot(45 deg) = 1
+    {10, 4, 0.0001f, 1000},  // narrow, wide, the smallest near
+    {150, 0.25f, 9, 10},     // wide, tall, a thin slab
+    {60, 1.5f, 0.001f, 50},  // the z-fighting near plane
 };
 
 // The NDC depth z_clip / w_clip of the eye-space point (0, 0, z, 1).
@@ -69,25 +73,79 @@ float ndc_depth(const glm::mat4& P, float z) {
 
 }  // namespace
 
+TEST_CASE("projection: the declaration has the sheet's parameters and defaults") {
+    const fw::RegisteredLab& lab = fw::find_lab("projection");
+    CHECK(lab.info.number == 3);
+    CHECK(lab.info.dir == "03_projection");
+    const fw::ParamValues p = fw::default_params(lab);
+    CHECK(p.choice("scene") == "cards");
+    CHECK(p.choice("show") == "color");
+    CHECK(p.choice("mode") == "perspective");
+    CHECK(p.number("fov") == 60);
+    CHECK(p.number("near") == 1);
+    CHECK(p.number("far") == 50);
+    CHECK(p.number("ortho_size") == 2);
+    for (const char* name : {"eye_x", "eye_y", "eye_z", "target_x", "target_y"})
+        CHECK(p.number(name) == 0);
+    CHECK(p.number("target_z") == -1);
+    for (const fw::Param& param : lab.info.params) {
+        INFO("parameter " << param.name);
+        CHECK(!param.help_text.empty());
+        CHECK(param.shortcut != 0);
+        if (param.name == "fov") CHECK((param.min == 10 && param.max == 150));
+        if (param.name == "near") CHECK((param.min == doctest::Approx(0.0001) && param.max == 10));
+    }
+    std::vector<std::string> functions;
+    for (const fw::UnitFunction& f : lab.info.functions) functions.push_back(f.name);
+    CHECK(functions == std::vector<std::string>{"lookAt", "perspective", "orthographic",
+                                                "perspective01", "viewport"});
+}
+
+TEST_CASE("projection: dragging orbits the eye about the target, the wheel zooms") {
+    const fw::RegisteredLab& reg = fw::find_lab("projection");
+    std::unique_ptr<fw::Lab> lab = reg.create();
+    fw::ParamValues p = fw::default_params(reg);
+    p.set("eye_z", "4");
+    p.set("target_z", "0");
+    auto eye = [&] { return glm::vec3(p.number("eye_x"), p.number("eye_y"), p.number("eye_z")); };
+    // Right: the scene turns right, so the eye goes left (-x), still 4 away.
+    CHECK(lab->on_drag(p, 50, 0));
+    CHECK(eye().x < -1.0f);
+    CHECK(glm::length(eye()) == doctest::Approx(4.0f).epsilon(1e-5));
+    CHECK(eye().y == doctest::Approx(0.0f));
+    // Far down: the eye rises, but stops short of straight above the target.
+    CHECK(lab->on_drag(p, 0, -10000));
+    CHECK(glm::length(eye()) == doctest::Approx(4.0f).epsilon(1e-5));
+    CHECK(eye().y > 3.9f);
+    CHECK(lab->validate(p).empty());
+    // The wheel: 5 degrees a step, within [10, 150].
+    CHECK(lab->on_scroll(p, 2));
+    CHECK(p.number("fov") == 50);
+    lab->on_scroll(p, 100);
+    CHECK(p.number("fov") == 10);
+    lab->on_scroll(p, -100);
+    CHECK(p.number("fov") == 150);
+}
+
 TEST_CASE("projection math: lookAt agrees with glm::lookAt") {
     const glm::vec3 up(0, 1, 0);
     struct Case {
         glm::vec3 eye, target, up;
     };
     const Case edges[] = {
-        {{0, 0, 0}, {0, 0, -1}, up},     // the lab's default: the identity
-        {{0, 0, 5}, {0, 0, 0}, up},      // a translation only
-        {{0, 0, 0}, {1, 0, 0}, up},      // looking down +x
-        {{0, 0, 0}, {0, 0, 1}, up},      // looking back, down +z
-        {{3, 2, 1}, {-1, 0.5f, -8}, up}, // anywhere
-        {{1, 1, 1}, {0, 0, 0}, {0, 0, 1}},  // another up
-        {{0, 0, 0}, {0, -1, -1e-3f}, up},   // nearly straight down
-        {{0, 0, 0}, {0, 0, -1}, {0, 5, 0}}, // up need not be unit length
+        {{0, 0, 0}, {0, 0, -1}, up},            // the lab's default: the identity
+        {{0, 0, 5}, {0, 0, 0}, up},             // a translation only
+        {{0, 0, 0}, {1, 0, 0}, up},             // looking down +x
+        {{0, 0, 0}, {0, 0, 1}, up},             // looking back, down +z
+        {{3, 2, 1}, {-1, 0.5f, -8}, up},        // anywhere
+        {{1, 1, 1}, {0, 0, 0}, {0, 0, 1}},      // another up
+        {{0, 0, 0}, {0, -1, -1e-3f}, up},       // nearly straight down
+        {{0, 0, 0}, {0, 0, -1}, {0, 5, 0}},     // up need not be unit length
         {{0, 0, 0}, {0, 0, -1}, {0.3f, 1, 0}},  // nor perpendicular to the view
     };
     for (const Case& c : edges) {
-        const std::string what = "lookAt(" + text(c.eye) + ", " + text(c.target) + ", " +
-                                 text(c.up) + ")";
+        const std::string what =
+            "lookAt(" + text(c.eye) + ", " + text(c.target) + ", " + text(c.up) + ")";
         CHECK(close(projection::lookAt(c.eye, c.target, c.up), glm::lookAt(c.eye, c.target, c.up),
                     1e-5f, what));
     }
@@ -102,8 +160,8 @@ TEST_CASE("projection math: lookAt agrees with glm::lookAt") {
         const glm::vec3 eye = random_vec(), target = random_vec(), u = random_vec();
         const std::string what = "case " + std::to_string(i) + ": lookAt(" + text(eye) + ", " +
                                  text(target) + ", " + text(u) + ")";
-        failures += !close(projection::lookAt(eye, target, u), glm::lookAt(eye, target, u), 1e-4f,
-                           what);
+        failures +=
+            !close(projection::lookAt(eye, target, u), glm::lookAt(eye, target, u), 1e-4f, what);
     }
     CHECK_MESSAGE(failures == 0, failures << " of " << kRandomCases << " random cases differ");
 }
@@ -117,13 +175,14 @@ TEST_CASE("projection math: lookAt sends the eye to the origin and the target on
         const glm::vec3 eye = random_vec(), target = random_vec();
         const glm::mat4 V = projection::lookAt(eye, target, {0, 1, 0});
         const float distance = glm::length(target - eye);
-        const std::string what = "case " + std::to_string(i) + ": eye " + text(eye) +
-                                 ", target " + text(target);
+        const std::string what =
+            "case " + std::to_string(i) + ": eye " + text(eye) + ", target " + text(target);
         // Expected: eye -> (0, 0, 0), target -> (0, 0, -|target - eye|),
         // and a point above the eye stays in the upper half (y > 0).
         bool pass = close(glm::vec3(V * glm::vec4(eye, 1)), glm::vec3(0), 1e-4f, what + ", eye");
         pass = close(glm::vec3(V * glm::vec4(target, 1)), glm::vec3(0, 0, -distance), 1e-4f,
-                     what + ", target") && pass;
+                     what + ", target") &&
+               pass;
         pass = (V * glm::vec4(eye + glm::vec3(0, 1, 0), 1)).y >= 0.0f && pass;
         // The rotation part is orthonormal: V^T V = I on the upper 3 x 3.
         const glm::mat3 R(V);
@@ -197,10 +256,10 @@ TEST_CASE("projection math: orthographic agrees with glm::ortho") {
         float l, r, b, t, n, f;
     };
     const Box edges[] = {
-        {-1, 1, -1, 1, -1, 1},      // the NDC cube itself (near -1: z = +1 is the near face)
-        {-2, 2, -2, 2, 1, 50},      // the lab's orthographic default, square frame
-        {-1, 3, -0.5f, 2, 0.1f, 10}, // off centre
-        {-10, -5, 5, 10, -5, 5},    // the whole box to one side, near behind the eye
+        {-1, 1, -1, 1, -1, 1},        // the NDC cube itself (near -1: z = +1 is the near face)
+        {-2, 2, -2, 2, 1, 50},        // the lab's orthographic default, square frame
+        {-1, 3, -0.5f, 2, 0.1f, 10},  // off centre
+        {-10, -5, 5, 10, -5, 5},      // the whole box to one side, near behind the eye
         {-0.1f, 0.1f, -0.1f, 0.1f, 0.0001f, 1000},
     };
     for (const Box& c : edges) {
@@ -211,8 +270,10 @@ TEST_CASE("projection math: orthographic agrees with glm::ortho") {
         const glm::mat4 O = projection::orthographic(c.l, c.r, c.b, c.t, c.n, c.f);
         CHECK(close(O, glm::ortho(c.l, c.r, c.b, c.t, c.n, c.f), 1e-5f, "orthographic"));
         // Its corners: (l, b, -n) -> (-1, -1, -1) and (r, t, -f) -> (1, 1, 1).
-        CHECK(close(glm::vec3(O * glm::vec4(c.l, c.b, -c.n, 1)), glm::vec3(-1), 1e-5f, "near corner"));
-        CHECK(close(glm::vec3(O * glm::vec4(c.r, c.t, -c.f, 1)), glm::vec3(1), 1e-5f, "far corner"));
+        CHECK(close(glm::vec3(O * glm::vec4(c.l, c.b, -c.n, 1)), glm::vec3(-1), 1e-5f,
+                    "near corner"));
+        CHECK(
+            close(glm::vec3(O * glm::vec4(c.r, c.t, -c.f, 1)), glm::vec3(1), 1e-5f, "far corner"));
     }
     std::mt19937 rng(kSeed + 3);
     std::uniform_real_distribution<float> lo(-10, -0.1f), hi(0.1f, 10), n(-5, 5), depth(1, 100);
@@ -220,9 +281,9 @@ TEST_CASE("projection math: orthographic agrees with glm::ortho") {
     for (int i = 0; i < kRandomCases; ++i) {
         const Box c{lo(rng), hi(rng), lo(rng), hi(rng), n(rng), 0};
         const float f = c.n + depth(rng);
-        failures += !close(projection::orthographic(c.l, c.r, c.b, c.t, c.n, f),
-                           glm::ortho(c.l, c.r, c.b, c.t, c.n, f), 1e-5f,
-                           "case " + std::to_string(i));
+        failures +=
+            !close(projection::orthographic(c.l, c.r, c.b, c.t, c.n, f),
+                   glm::ortho(c.l, c.r, c.b, c.t, c.n, f), 1e-5f, "case " + std::to_string(i));
     }
     CHECK_MESSAGE(failures == 0, failures << " of " << kRandomCases << " random cases differ");
 }
