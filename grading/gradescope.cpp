@@ -80,8 +80,8 @@ void copy_entry(const fs::path& from, const fs::path& to) {
 constexpr fs::perms kExecutable = fs::perms::owner_all | fs::perms::group_read |
                                   fs::perms::group_exec | fs::perms::others_read |
                                   fs::perms::others_exec;
-constexpr fs::perms kReadable = fs::perms::owner_read | fs::perms::owner_write |
-                                fs::perms::group_read | fs::perms::others_read;
+constexpr fs::perms kReadable =
+    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read;
 
 // The last `lines` lines of a file, at most its last MiB.
 std::string tail_of_file(const std::string& path, int lines) {
@@ -169,11 +169,11 @@ int gradescope_command(const std::string& out_dir) {
     for (const auto& [rel, text] : students)
         std::printf("    %s (student version in %s/)\n", rel.c_str(), kStudentVersions);
     for (const std::string& rel : missing)
-        std::printf("  %-48s not copied: tracked by git but missing from the tree\n",
-                    rel.c_str());
-    std::printf("Zip the contents of %s (not the folder itself) and upload it to Gradescope as "
-                "the autograder.\n",
-                out_dir.c_str());
+        std::printf("  %-48s not copied: tracked by git but missing from the tree\n", rel.c_str());
+    std::printf(
+        "Zip the contents of %s (not the folder itself) and upload it to Gradescope as "
+        "the autograder.\n",
+        out_dir.c_str());
     return 0;
 }
 
@@ -202,8 +202,9 @@ int not_graded_command(const std::string& reason, const std::string& log_file,
     // the reason once per lab.
     const std::string path = report::in_dir(out_dir, "results.json");
     nlohmann::ordered_json results = nlohmann::ordered_json::parse(read_file(path));
-    results["output"] = report::clean_text("0/" + report::points(run.max_score()) + " points: " +
-                                           reason + (log.empty() ? "" : "\n\n" + log) + "\n");
+    results["output"] =
+        report::clean_text("0/" + report::points(run.max_score()) + " points: " + reason +
+                           (log.empty() ? "" : "\n\n" + log) + "\n");
     report::write_text_file(path, results.dump(2) + "\n");
     std::printf("%s", summary_table(run).c_str());
     return 1;

@@ -52,6 +52,8 @@ std::vector<std::string> project_files(const std::string& source) {
     if (!fs::is_directory(root))
         throw fw::Error("source tree '" + source +
                         "' is not a directory; set LAB_ROOT to the repository");
+    // Untracked files count too: a release from a working tree holds what a
+    // build of that tree compiles (a new lab not yet committed included).
     if (fs::exists(root / ".git")) {
         std::string command =
             "git -C " + shell_quote(source) + " ls-files -z --cached --others --exclude-standard";

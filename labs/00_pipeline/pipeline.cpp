@@ -7,7 +7,7 @@
 // (points, lines, strips, fans), face orientation and back-face culling.
 // GL: glDrawArrays, glDrawElements, glEnable/glDisable, glDepthFunc,
 // glFrontFace, glCullFace, gl_PointSize with GL_PROGRAM_POINT_SIZE.
-// Student parts (between BEGIN SOLUTION and END SOLUTION): set_depth_test()
+// Student parts (marked TODO): set_depth_test()
 // and set_culling() below, expand_indices() in meshes.cpp, and the
 // pass-through in shaders/00_pipeline/pipeline.vert.
 #include <glm/gtc/matrix_transform.hpp>

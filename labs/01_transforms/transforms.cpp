@@ -6,7 +6,7 @@
 // Lecture: homogeneous coordinates, the basic transformations, rotation about
 // an arbitrary axis (Rodrigues), composition of transformations.
 // GL: uniform mat4 (glProgramUniformMatrix4fv), glDrawArrays.
-// Student parts (between BEGIN SOLUTION and END SOLUTION): translate, scale,
+// Student parts (marked TODO): translate, scale,
 // rotateX/Y/Z, rotate and compose in transforms_math.cpp.
 #include <algorithm>
 #include <iterator>

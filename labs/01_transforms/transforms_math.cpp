@@ -1,6 +1,6 @@
 // Lab 1's student parts: the lecture's transformation matrices, written out
 // entry by entry (see README.md for the formulas in this lab's notation).
-// Student parts: every function between BEGIN SOLUTION and END SOLUTION.
+// Student parts: every function marked TODO.
 #include "transforms_math.hpp"
 
 #include <cmath>

@@ -7,7 +7,7 @@
 // H = J R), composition order, local versus world frames.
 // GL: one vertex buffer holding every part, glDrawArrays with a first vertex,
 // a mat4 and a vec3 uniform per draw, orthographic projection.
-// Student part (between BEGIN SOLUTION and END SOLUTION): arm_matrices() in
+// Student part (marked TODO): arm_matrices() in
 // arm.cpp.
 #include <cmath>
 #include <glm/gtc/constants.hpp>

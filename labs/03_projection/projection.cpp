@@ -7,7 +7,7 @@
 // Lecture: camera coordinates (lookAt), the view frustum, perspective and
 // parallel projection, NDC, the viewport transform, the depth buffer.
 // GL: the vertex shader's gl_Position, gl_FragCoord.z, glEnable(GL_DEPTH_TEST).
-// Student parts (between BEGIN SOLUTION and END SOLUTION): lookAt(),
+// Student parts (marked TODO): lookAt(),
 // perspective(), orthographic(), perspective01() and viewport() in
 // camera_math.cpp, and the transform in shaders/03_projection/projection.vert.
 #include <algorithm>

@@ -10,7 +10,7 @@
 // GL: GL_GEOMETRY_SHADER (layout(triangles) in, layout(triangle_strip /
 // line_strip, max_vertices = N) out), noperspective interpolation,
 // GL_PRIMITIVES_GENERATED (counts what the geometry shader emits).
-// Student parts (between BEGIN SOLUTION and END SOLUTION): the geometry
+// Student parts (marked TODO): the geometry
 // shaders shaders/04_geometry/duplicate.geom, explode.geom, normals.geom and
 // the edge distances in wireframe.geom.
 #include <array>

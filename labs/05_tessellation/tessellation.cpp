@@ -14,13 +14,14 @@
 // (layout(vertices = N) out, gl_TessLevelInner/Outer), GL_TESS_EVALUATION_SHADER
 // (layout(triangles / quads, *_spacing, ccw) in, gl_TessCoord), a stage linked
 // from several shader objects, GL_PRIMITIVES_GENERATED.
-// Student parts (between BEGIN SOLUTION and END SOLUTION), all GLSL: the
+// Student parts (marked TODO), all GLSL: the
 // levels in shaders/05_tessellation/levels.tesc, the evaluation shaders
 // sphere.tese, flag.tese and param_sphere.tese.
 #include <algorithm>
 #include <array>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,9 @@ constexpr GLuint kPositionLocation = 0;  // in vec3 a_position
 enum Shading { kFill = 0, kLambert = 1, kNormal = 2 };
 
 constexpr double kMinLevel = 1.0, kMaxLevel = 64.0;
-const std::vector<std::string> kSpacings = {"equal", "fractional_even", "fractional_odd"};
+// The values of `spacing`; each names its shader object spacing_<name>.tese.
+constexpr const char* kSpacings[] = {"equal", "fractional_even", "fractional_odd"};
+constexpr std::size_t kSpacingCount = sizeof(kSpacings) / sizeof(kSpacings[0]);
 
 // The sheet's scenes: one patch each, except the icosahedron's 20.
 struct Scene {
@@ -57,7 +60,8 @@ constexpr Scene kScenes[] = {
 constexpr std::size_t kSceneCount = sizeof(kScenes) / sizeof(kScenes[0]);
 
 // Scene triangle: NDC corners, counter-clockwise, identity matrices.
-const std::vector<glm::vec3> kTriangle = {{-0.9f, -0.8f, 0.0f}, {0.9f, -0.8f, 0.0f}, {0.0f, 0.9f, 0.0f}};
+const std::vector<glm::vec3> kTriangle = {
+    {-0.9f, -0.8f, 0.0f}, {0.9f, -0.8f, 0.0f}, {0.0f, 0.9f, 0.0f}};
 // A quad patch: the unit square's corners in (u, v), counter-clockwise.
 const std::vector<glm::vec3> kQuad = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
 const glm::vec3 kFillColor{0.2f, 0.3f, 0.8f};
@@ -87,8 +91,9 @@ fw::Param level(const char* name, int key, const char* what) {
     return fw::Param::number(name, 4)
         .range(kMinLevel, kMaxLevel)
         .step(1)
-        .help(std::string(what) + " tessellation level of every patch; fractions matter with "
-                                  "the fractional spacings")
+        .help(std::string(what) +
+              " tessellation level of every patch; fractions matter with "
+              "the fractional spacings")
         .key(key);
 }
 
@@ -97,7 +102,7 @@ fw::Param level(const char* name, int key, const char* what) {
 class TessellationLab : public fw::Lab {
 public:
     static fw::LabInfo info() {
-        std::vector<std::string> scenes;
+        std::vector<std::string> scenes, spacings(std::begin(kSpacings), std::end(kSpacings));
         for (const Scene& s : kScenes) scenes.push_back(s.name);
         fw::LabInfo i;
         i.number = 5;
@@ -111,7 +116,7 @@ public:
                 .key('S'),
             level("inner", 'I', "inner"),
             level("outer", 'O', "outer"),
-            fw::Param::choice("spacing", kSpacings, "equal")
+            fw::Param::choice("spacing", spacings, "equal")
                 .help("how a level becomes segments: equal rounds up; fractional_even and "
                       "fractional_odd round up to an even or odd count, two segments shorter")
                 .key('P'),
@@ -148,14 +153,14 @@ public:
 
     void init(fw::ProgramLibrary& programs) override {
         for (std::size_t s = 0; s < kSceneCount; ++s)
-            for (std::size_t k = 0; k < kSpacings.size(); ++k) {
+            for (std::size_t k = 0; k < kSpacingCount; ++k) {
                 const std::string dir = "05_tessellation/";
                 programs_[s][k] = &programs.load({
                     dir + "patch.vert",
                     dir + "levels.tesc",
                     dir + (kScenes[s].quads ? "quad.tesc" : "triangle.tesc"),
                     dir + kScenes[s].evaluation,
-                    dir + "spacing_" + kSpacings[k] + ".tese",
+                    dir + "spacing_" + std::string(kSpacings[k]) + ".tese",
                     dir + "wireframe.geom",
                     dir + "shade.frag",
                 });
@@ -197,8 +202,9 @@ public:
         if (name == "flag") {
             view_projection = projection * glm::lookAt(kFlagEye, kFlagCentre, up);
             // Offscreen, frame.time is 0: the same parameters draw the same image.
-            const float phase = glm::radians(p.number("phase")) +
-                                (p.flag("animate") ? static_cast<float>(frame.time) * kWaveSpeed : 0.0f);
+            const float phase =
+                glm::radians(p.number("phase")) +
+                (p.flag("animate") ? static_cast<float>(frame.time) * kWaveSpeed : 0.0f);
             set_student_uniform(program, "u_W", kFlagW);
             set_student_uniform(program, "u_H", kFlagH);
             set_student_uniform(program, "u_D", p.number("D"));
@@ -231,7 +237,8 @@ public:
     // The patches drawn and their domain: {"patches": 20, "domain": "triangles"}.
     nlohmann::json stats(const fw::ParamValues& p) const override {
         const Scene& scene = kScenes[p.choice_index("scene")];
-        const std::size_t patches = std::string(scene.name) == "sphere" ? ico_.index_count() / 3 : 1;
+        const std::size_t patches =
+            std::string(scene.name) == "sphere" ? ico_.index_count() / 3 : 1;
         return {{"patches", patches}, {"domain", scene.quads ? "quads" : "triangles"}};
     }
 
@@ -243,7 +250,8 @@ public:
     }
 
 private:
-    std::array<std::array<fw::Program*, 3>, kSceneCount> programs_{};
+    // programs_[scene][spacing]: the spacing is fixed when a program is linked.
+    std::array<std::array<fw::Program*, kSpacingCount>, kSceneCount> programs_{};
     fw::Buffer triangle_vbo_, quad_vbo_, ico_vbo_, ico_ibo_;
     fw::VertexArray triangle_, quad_, ico_;
 };

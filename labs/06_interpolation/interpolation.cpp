@@ -7,7 +7,7 @@
 // Lecture: rasterization and interpolation, shading models, NPR.
 // GL: the GLSL interpolation qualifiers smooth, noperspective and flat,
 // glProvokingVertex, glDrawElements.
-// Student parts (between BEGIN SOLUTION and END SOLUTION), all GLSL: the
+// Student parts (marked TODO), all GLSL: the
 // qualifiers in shaders/06_interpolation/interpolate.frag; the lighting in
 // shading.vert (Gouraud) and shading.frag (Phong, toon).
 #include <cctype>

@@ -107,10 +107,16 @@ TEST_CASE("course grade: a child's claims count for nothing; only its raw output
         for (const json& c : cp.value("checks", json::array())) {
             if (c["kind"] == "probe" && c.contains("color") && c["color"] == json::array({0, 0, 0}))
                 black += c["points"].get<double>();
+            fw::CompareOptions options;  // the check's own thresholds, as course reads them
+            options.tolerance = c.value("tolerance", options.tolerance);
+            options.radius = c.value("radius", options.radius);
+            options.max_failed_fraction = c.value("max_fail_fraction", options.max_failed_fraction);
             if (c["kind"] == "image" &&
                 fw::compare_images(
-                    blank, fw::read_png(fw::test::source_dir() + "/labs/00_pipeline/reference/" +
-                                        cp["name"].get<std::string>() + ".png"))
+                    blank,
+                    fw::read_png(fw::test::source_dir() + "/labs/00_pipeline/reference/" +
+                                 cp["name"].get<std::string>() + ".png"),
+                    options)
                     .passed) {
                 MESSAGE("a black frame passes the image check of " << cp["name"]);
                 black += c["points"].get<double>();

@@ -3,9 +3,9 @@
 // built once, then run_autograder grades submissions made from the solution:
 // the solution itself, nothing (the student versions), and hostile ones in
 // lab 0 (code that never returns, a shader loop that never ends, a crash, a
-// flood of output, snooping on references and results, a compile error). Every results.json must list
-// every check of every lab with its points, and the labs not at fault must
-// score as they do with the solution.
+// flood of output, snooping on references and results, a compile error).
+// Every results.json must list every check of every lab with its points, and
+// the labs not at fault must score as they do with the solution.
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -97,8 +97,8 @@ struct Run {
     int exit_code = -1;
     std::string output;  // run_autograder's stdout and stderr
     double seconds = 0;
-    json results;                                  // results/results.json
-    std::map<std::string, double> lab_seconds;     // from results/grade/summary.txt
+    json results;                               // results/results.json
+    std::map<std::string, double> lab_seconds;  // from results/grade/summary.txt
 };
 
 // The autograder, set up once for every test case.
@@ -119,10 +119,11 @@ std::string environment(const Autograder& ag, const std::string& extra = "") {
 }
 
 std::string set_up(Autograder& ag) {
-    ag.dir = fw::test::out_dir();
+    // One folder whichever test case comes first, so that re-runs find their
+    // ccache entries (CCACHE_BASEDIR below).
+    ag.dir = fs::path(fw::test::out_dir()).parent_path() / "gradescope";
     ag.root = ag.dir / "root";
     ag.user = "nobody";
-    ag.expected = expected_from_data(fw::test::source_dir());
     fs::remove_all(ag.root);
     fs::create_directories(ag.root / "results");
     const fs::path source = ag.root / "source";
@@ -136,6 +137,8 @@ std::string set_up(Autograder& ag) {
     for (std::string line; std::getline(list, line);)
         if (!line.empty()) ag.student_files.push_back(line);
     if (ag.student_files.empty()) return "student_files.txt is empty";
+    ag.expected = expected_from_data(source);
+    if (ag.expected.victim.empty()) return "no labs/00_*/checkpoints.json: lab 0 is the victim";
     // Before any submission replaces them; the submissions are made from these.
     for (const std::string& rel : ag.student_files) ag.solution_text[rel] = read(source / rel);
     for (const char* script : {"setup.sh", "run_autograder"})
@@ -146,9 +149,12 @@ std::string set_up(Autograder& ag) {
     // Packages are present here; ccache, when installed, keeps re-runs quick.
     std::string env = "SKIP_APT=1";
     if (fw::test::run_command("command -v ccache").exit_code == 0)
-        env += " CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache "
-               "CCACHE_NOHASHDIR=1 CCACHE_BASEDIR=" + quote(source.string());
-    r = fw::test::run_command(environment(ag, env) + "bash " + quote((source / "setup.sh").string()));
+        env +=
+            " CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache "
+            "CCACHE_NOHASHDIR=1 CCACHE_BASEDIR=" +
+            quote(source.string());
+    r = fw::test::run_command(environment(ag, env) + "bash " +
+                              quote((source / "setup.sh").string()));
     std::printf("[%5.1f s] setup.sh: exit %d\n", seconds_since(start), r.exit_code);
     if (r.exit_code != 0) {
         MESSAGE("setup.sh output (tail):\n" << tail(r.output));
@@ -216,7 +222,8 @@ void check_complete(const Run& run, const Expected& e) {
         seen[name.substr(0, name.find(" / ", name.find(" / ") + 3))] += 1;
         score += t.value("score", 0.0);
     }
-    CHECK_MESSAGE(seen == e.checks, "Expected the checks of the data files, Observed those of results.json");
+    CHECK_MESSAGE(seen == e.checks,
+                  "Expected the checks of the data files, Observed those of results.json");
     CHECK(r.value("max_score", -1.0) == doctest::Approx(e.points));
     CHECK(r.value("score", -1.0) == doctest::Approx(score));
 }
@@ -234,8 +241,9 @@ void check_others_unaffected(Autograder& ag, const Run& run) {
         if (lab_of(t) == ag.expected.victim) continue;
         ++compared;
         CHECK_MESSAGE(t["status"] == want[t["name"]],
-                      t["name"] << ": Expected " << want[t["name"]] << " (as with the solution), Observed "
-                                << t["status"] << "\n" << t.value("output", ""));
+                      t["name"] << ": Expected " << want[t["name"]]
+                                << " (as with the solution), Observed " << t["status"] << "\n"
+                                << t.value("output", ""));
     }
     CHECK(compared == want.size());
 }
@@ -314,7 +322,8 @@ TEST_CASE("gradescope: the folder holds the repository, the scripts and the stud
     const fs::path source = ag.root / "source", repo = fw::test::source_dir();
     for (const auto& [script, text] : ag.scripts) {
         INFO(script);
-        CHECK((fs::status(source / script).permissions() & fs::perms::owner_exec) != fs::perms::none);
+        CHECK((fs::status(source / script).permissions() & fs::perms::owner_exec) !=
+              fs::perms::none);
         CHECK(read(source / script) == text);
     }
     CHECK(!fs::exists(source / ".git"));
@@ -329,14 +338,16 @@ TEST_CASE("gradescope: the folder holds the repository, the scripts and the stud
         const fs::path data = entry.path() / "checkpoints.json";
         if (!fs::exists(data)) continue;
         std::vector<std::string> want, seen;
-        for (const auto& cp : fw::read_checkpoint_file(data.string()).checkpoints) want.push_back(cp.name);
+        for (const auto& cp : fw::read_checkpoint_file(data.string()).checkpoints)
+            want.push_back(cp.name);
         const fs::path copy = source / "labs" / entry.path().filename() / "checkpoints.json";
-        for (const auto& cp : fw::read_checkpoint_file(copy.string()).checkpoints) seen.push_back(cp.name);
+        for (const auto& cp : fw::read_checkpoint_file(copy.string()).checkpoints)
+            seen.push_back(cp.name);
         INFO(copy);
         CHECK(seen == want);
     }
-    auto again = fw::test::run_command(quote(fw::test::bin_dir() + "/course") + " gradescope --out " +
-                                       quote(source.string()));
+    auto again = fw::test::run_command(quote(fw::test::bin_dir() + "/course") +
+                                       " gradescope --out " + quote(source.string()));
     fw::test::check_mentions(again.output, {"not empty", source.string()});
     CHECK(again.exit_code == 2);
 }
@@ -346,7 +357,8 @@ TEST_CASE("gradescope: nothing submitted is graded with the student versions, be
     Run run = submit(ag, "no code (student versions)", {{"README.txt", "nothing yet\n"}});
     check_complete(run, ag.expected);
     fw::test::check_mentions(run.output, {"not submitted: graded with the student version"});
-    const double score = run.results.value("score", -1.0), max = run.results.value("max_score", 0.0);
+    const double score = run.results.value("score", -1.0),
+                 max = run.results.value("max_score", 0.0);
     MESSAGE("student versions: " << score << " of " << max << " points");
     CHECK(score < max);
 }
@@ -372,9 +384,10 @@ TEST_CASE("gradescope: student code that never returns fails its lab by the time
     Autograder& ag = autograder();
     const int timeout = short_timeout(ag);
     const std::string file = victim_file(ag, "labs", false);
-    Run run = submit(ag, "endless loop in " + file,
-                     hostile(ag, file, "    for (volatile bool forever = true; forever;) {}", false),
-                     "COURSE_TIMEOUT=" + std::to_string(timeout));
+    Run run =
+        submit(ag, "endless loop in " + file,
+               hostile(ag, file, "    for (volatile bool forever = true; forever;) {}", false),
+               "COURSE_TIMEOUT=" + std::to_string(timeout));
     check_victim_failed(ag, run, "timed out after " + std::to_string(timeout) + " s");
 }
 
@@ -408,10 +421,10 @@ TEST_CASE("gradescope: a shader loop that never ends cannot stall the grading") 
 TEST_CASE("gradescope: a crash in student code fails its lab naming the signal") {
     Autograder& ag = autograder();
     const std::string file = victim_file(ag, "labs", false);
-    Run run = submit(ag, "null write in " + file,
-                     hostile(ag, file,
-                             "    { volatile int* volatile hostile = nullptr; *hostile = 1; }",
-                             false));
+    Run run =
+        submit(ag, "null write in " + file,
+               hostile(ag, file, "    { volatile int* volatile hostile = nullptr; *hostile = 1; }",
+                       false));
     check_victim_failed(ag, run, "SIGSEGV");
 }
 
@@ -433,8 +446,10 @@ TEST_CASE("gradescope: gigabytes on stdout are cut at the cap, quickly") {
 
 TEST_CASE("gradescope: submitted code can neither read references nor write results") {
     if (geteuid() != 0) {
-        MESSAGE("skipped: run-as needs root (run_autograder runs as root on Gradescope); "
-                "this test runs as uid " << geteuid());
+        MESSAGE(
+            "skipped: run-as needs root (run_autograder runs as root on Gradescope); "
+            "this test runs as uid "
+            << geteuid());
         return;
     }
     Autograder& ag = autograder();
@@ -448,48 +463,23 @@ TEST_CASE("gradescope: submitted code can neither read references nor write resu
     fs::remove_all(report.parent_path());
     fs::create_directories(report.parent_path());
     fs::permissions(report.parent_path(), fs::perms::all | fs::perms::sticky_bit);
-    const std::string forged = "{\"score\": 1000000, \"output\": \"forged by the submission\"}";
     const fs::path results = ag.root / "results";
-    // Tries at once, and from a process of its own session that outlives the
-    // lab for a while, after course has written its results.
-    const std::string code =
-        "    static bool tried = false;\n"
-        "    if (!tried) {\n"
-        "        tried = true;\n"
-        "        auto attempt = [](const char* tag) {\n"
-        "            FILE* log = std::fopen(" + json(report.string()).dump() + ", \"a\");\n"
-        "            if (!log) return;\n"
-        "            auto note = [&](const char* what, bool ok) { std::fprintf(log, \"%s %s: %s\\n\", tag, what, ok ? \"DONE\" : std::strerror(errno)); };\n"
-        "            int fd = open(" + json(reference).dump() + ", O_RDONLY);\n"
-        "            note(\"read reference\", fd >= 0);\n"
-        "            fd = open(" + json((lab / "checkpoints.json").string()).dump() + ", O_RDONLY);\n"
-        "            note(\"read checkpoints\", fd >= 0);\n"
-        "            fd = open(" + json((lab / "checkpoints.json").string()).dump() + ", O_WRONLY | O_APPEND);\n"
-        "            note(\"open checkpoints for writing\", fd >= 0);\n"
-        "            for (const char* path : {" + json((results / "results.json").string()).dump() + ", " +
-        json((results / "grade" / "results.json").string()).dump() + "}) {\n"
-        "                FILE* f = std::fopen(path, \"w\");\n"
-        "                if (f) std::fputs(" + json(forged).dump() + ", f);\n"
-        "                note(path, f && std::fclose(f) == 0);\n"
-        "            }\n"
-        "            std::fclose(log);\n"
-        "        };\n"
-        "        attempt(\"at once\");\n"
-        "        if (fork() == 0) {\n"
-        "            setsid();\n"
-        "            if (fork() == 0) {\n"
-        "                for (int fd = 0; fd < 3; ++fd) close(fd);\n"
-        "                for (int i = 0; i < 15; ++i) { sleep(1); attempt(\"later\"); }\n"
-        "                attempt(\"last\");\n"
-        "            }\n"
-        "            _exit(0);\n"
-        "        }\n"
-        "    }";
+    const std::map<std::string, std::string> values = {
+        {"@REPORT@", report.string()},
+        {"@REFERENCE@", reference},
+        {"@CHECKPOINTS@", (lab / "checkpoints.json").string()},
+        {"@RESULTS@", (results / "results.json").string()},
+        {"@GRADE_RESULTS@", (results / "grade" / "results.json").string()},
+        {"@FORGED@", "{\"score\": 1000000, \"output\": \"forged by the submission\"}"}};
+    std::string code = read(fw::test::source_dir() + "/tests/grading/submissions/snoop.inc");
+    for (const auto& [name, value] : values)
+        for (size_t at; (at = code.find(name)) != std::string::npos;)
+            code.replace(at, name.size(), json(value).dump());
     Run run = submit(ag, "snooping from " + file,
                      hostile(ag, file, code, false,
                              "#include <fcntl.h>\n#include <unistd.h>\n#include <cerrno>\n"
                              "#include <cstdio>\n#include <cstring>\n"));
-    // The lingering process gives up after 16 s.
+    // The lingering process gives up after 11 s.
     std::string log;
     for (int i = 0; i < 40 && (log = read(report)).find("last") == std::string::npos; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(500));
@@ -505,7 +495,8 @@ TEST_CASE("gradescope: submitted code can neither read references nor write resu
     check_complete(now, ag.expected);
     check_others_unaffected(ag, now);
     const Run& solution = solution_run(ag);
-    CHECK(now.results.value("score", -1.0) == doctest::Approx(solution.results.value("score", 0.0)));
+    CHECK(now.results.value("score", -1.0) ==
+          doctest::Approx(solution.results.value("score", 0.0)));
 }
 
 TEST_CASE("gradescope: a submission that does not compile scores 0 with the compiler's message") {

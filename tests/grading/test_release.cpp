@@ -256,6 +256,10 @@ TEST_CASE("release: a tree outside git: files, modes, hidden references, build f
     // The output must be new or empty.
     check_mentions(thrown([&] { grading::release_tree(src.string(), out.string()); }),
                    {out.string(), "not empty"});
+    // An output that cannot be created is named.
+    const fs::path blocked = src / "README.md" / "out";
+    check_mentions(thrown([&] { grading::release_tree(src.string(), blocked.string()); }),
+                   {blocked.string(), "cannot create"});
     // A marker error anywhere: nothing is written, and every faulty file is named.
     write(src / "framework/y.hpp", "// END SOLUTION\n");
     write(src / "shaders/00_x/z.vert", "\n// BEGIN SOLUTION\n");

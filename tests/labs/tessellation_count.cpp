@@ -73,7 +73,8 @@ long triangle_patch_triangles(float inner, std::array<float, 3> outer, Spacing s
 
 long quad_patch_triangles(std::array<float, 2> inner, std::array<float, 4> outer, Spacing spacing) {
     long outer_segments = 0;
-    bool all_one = effective_level(inner[0], spacing) == 1 && effective_level(inner[1], spacing) == 1;
+    bool all_one =
+        effective_level(inner[0], spacing) == 1 && effective_level(inner[1], spacing) == 1;
     for (float level : outer) {
         const int n = effective_level(level, spacing);
         outer_segments += n;
