@@ -77,17 +77,18 @@ void write_png(const std::string& path, const Image& img) {
                     "': check that its directory exists and is writable");
 }
 
-Image read_png(const std::string& path) {
-    std::string bytes = read_file(path, "PNG");
+Image read_png(const std::string& path) { return decode_png(read_file(path, "PNG"), path); }
+
+Image decode_png(const std::string& bytes, const std::string& name) {
     static const char signature[] = "\x89PNG\r\n\x1a\n";
     if (bytes.compare(0, 8, signature, 8) != 0)
-        throw Error("cannot read PNG '" + path + "': not a PNG file");
+        throw Error("cannot read PNG '" + name + "': not a PNG file");
     int w = 0, h = 0, channels = 0;
     // Asking for 4 components converts grey, grey+alpha and RGB to RGBA8.
     stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                           static_cast<int>(bytes.size()), &w, &h, &channels, 4);
     if (!data)
-        throw Error("cannot read PNG '" + path + "': " + stbi_failure_reason());
+        throw Error("cannot read PNG '" + name + "': " + stbi_failure_reason());
     Image img(w, h);
     std::memcpy(img.pixels.data(), data, img.pixels.size() * 4);
     stbi_image_free(data);

@@ -43,6 +43,8 @@ struct DepthImage {
 // PNG (RGBA, 8 bits per channel). Throw fw::Error naming the path on failure.
 void write_png(const std::string& path, const Image& img);
 Image read_png(const std::string& path);
+// The same from a PNG file's bytes already in memory; `name` is for messages.
+Image decode_png(const std::string& bytes, const std::string& name);
 
 // PFM, single channel ("Pf"), little-endian float32, rows bottom first:
 // header "Pf\n<width> <height>\n-1.0\n". read_pfm accepts either byte order

@@ -81,7 +81,7 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what);
 // NAME.png as the child wrote it: a regular file within its size limit, a PNG
 // of the planned size; else false and why.
 bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Image& image,
-                   std::string& why);
+                   std::string& why, std::string* png_bytes = nullptr);
 
 // Every check of every checkpoint, from the child's raw outputs. Images for
 // the report go to out_dir/<lab>/<checkpoint>[.expected|.diff].png.

@@ -9,6 +9,7 @@
 
 #include "framework/error.hpp"
 #include "grading/checks.hpp"
+#include "grading/report_text.hpp"
 #include "grading/units/reference.hpp"
 
 namespace grading {
@@ -67,11 +68,13 @@ public:
     Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& out_dir,
           const std::string& lab)
         : outputs_(outputs), plan_(plan) {
-        has_color_ = read_rendered(outputs, plan, color_, color_why_);
+        std::string png;
+        has_color_ = read_rendered(outputs, plan, color_, color_why_, &png);
         if (has_color_) {
+            // The bytes that decoded to exactly the asked size, kept as they
+            // are: encoding the image again would cost more than grading it.
             rendered_ = lab + "/" + plan.checkpoint + ".png";
-            fw::write_png(out_dir + "/" + rendered_,
-                          color_);  // re-encoded: course writes only what it decoded
+            report::write_text_file(out_dir + "/" + rendered_, png);
         }
     }
     const std::string& rendered() const { return rendered_; }
@@ -173,7 +176,11 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const json& check
     }
     fw::CompareResult c = fw::compare_images(*image, reference, opt);
     r.expected = lab.id + "/" + cp.name + ".expected.png";
-    fw::write_png(out_dir + "/" + r.expected, reference);
+    // The reference is course's own file: copied, not encoded again.
+    std::error_code ec;
+    std::filesystem::copy_file(ref_path, out_dir + "/" + r.expected,
+                               std::filesystem::copy_options::overwrite_existing, ec);
+    if (ec) throw fw::Error("cannot copy " + ref_path + " into the report: " + ec.message());
     if (!c.size_mismatch) {
         r.difference = lab.id + "/" + cp.name + ".diff.png";
         fw::write_png(out_dir + "/" + r.difference, c.difference);
@@ -325,7 +332,7 @@ void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, uns
 }  // namespace
 
 bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Image& image,
-                   std::string& why) {
+                   std::string& why, std::string* png_bytes) {
     const std::string name = render.checkpoint + ".png";
     // An uncompressed PNG: 4 bytes a pixel, a filter byte a row, chunk overhead.
     const std::uint64_t limit =
@@ -346,11 +353,14 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
         return false;
     }
     try {
-        image = fw::read_png(outputs.path(name));
+        // Decoded from the bytes read (and size-checked) above, never from the
+        // file again: a process the child left behind could have replaced it.
+        image = fw::decode_png(bytes, name);
     } catch (const fw::Error& e) {
         why = name + " is not a PNG: " + e.what();
         return false;
     }
+    if (png_bytes) *png_bytes = std::move(bytes);
     return true;
 }
 
