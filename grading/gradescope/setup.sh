@@ -27,13 +27,20 @@ fi
 if ! id -u "$user" >/dev/null 2>&1; then
   useradd --system --no-create-home --shell /usr/sbin/nologin "$user"
 fi
-# The user may read and run the build, and nothing more: it writes nothing of
-# the autograder's, and reads neither references nor checkpoint files (hidden
-# checkpoints are the course's). `course grade` checks this before it grades.
+# The user may read the sources and build and run `lab`, and nothing more: it
+# writes nothing of the autograder's, and reads neither references nor
+# checkpoint files (hidden checkpoints are the course's). `course grade` checks
+# this before it grades. Submissions are compiled as the user too, so that an
+# #include of a reference or a checkpoint file cannot quote it back in the
+# compiler's message; the user owns build/, so the trusted `course` is copied
+# out of it, into course-bin/, which stays root's.
 chown -R root:root "$source_dir"
 chmod -R go-w "$source_dir"
 for lab in "$source_dir"/labs/*/; do
   if [ -d "$lab/reference" ]; then chmod 0700 "$lab/reference"; fi
   if [ -f "$lab/checkpoints.json" ]; then chmod 0600 "$lab/checkpoints.json"; fi
 done
-echo "setup.sh: built $source_dir/build; submitted code will run as '$user'"
+install -d -m 0755 "$source_dir/course-bin"
+install -m 0755 "$source_dir/build/bin/course" "$source_dir/course-bin/course"
+chown -R "$user" "$source_dir/build"
+echo "setup.sh: built $source_dir/build; submitted code will be built and run as '$user'"

@@ -512,6 +512,33 @@ TEST_CASE("gradescope: a submission that does not compile scores 0 with the comp
     for (const json& t : run.results["tests"]) CHECK(t["status"] == "failed");
 }
 
+TEST_CASE("gradescope: the compiler cannot quote checkpoints or references back to the student") {
+    if (geteuid() != 0) {
+        MESSAGE("skipped: building as the unprivileged user needs root; this test runs as uid "
+                << geteuid());
+        return;
+    }
+    Autograder& ag = autograder();
+    const std::string file = victim_file(ag, "labs", false);
+    const fs::path checkpoints =
+        ag.root / "source" / "labs" / ag.expected.victim_dir / "checkpoints.json";
+    // A hidden checkpoint's name: in the course's file, never in what students see.
+    const json doc = json::parse(read(checkpoints), nullptr, true, /*ignore_comments=*/true);
+    std::string hidden;
+    for (const json& cp : doc["checkpoints"])
+        if (cp.value("visibility", "") == "hidden") hidden = cp["name"].get<std::string>();
+    REQUIRE_MESSAGE(!hidden.empty(), checkpoints << " has no hidden checkpoint");
+    Run run = submit(ag, "#include of " + checkpoints.string() + " in " + file,
+                     hostile(ag, file, "#include " + json(checkpoints.string()).dump(), false));
+    check_complete(run, ag.expected);
+    CHECK(run.results.value("score", -1.0) == 0.0);
+    const std::string output = run.results.value("output", "");
+    // The compiler, run as the user, may not even open the file.
+    fw::test::check_mentions(output, {"does not build", "checkpoints.json", "Permission denied"});
+    CHECK_MESSAGE(output.find(hidden) == std::string::npos,
+                  "the compiler's message quotes the hidden checkpoint '" << hidden << "'");
+}
+
 TEST_CASE("gradescope: when course grade itself fails, results.json still lists every check") {
     Autograder& ag = autograder();
     // A timeout course grade refuses (usage error, exit 2) stands for any failure of the grader.
