@@ -30,25 +30,12 @@ using nlohmann::json;
 
 namespace {
 
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
+using fw::test::read_text;
+using fw::test::shell_quote;
+using fw::test::write_text;
 
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
-void write(const fs::path& path, const std::string& text) {
-    fs::create_directories(path.parent_path());
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    REQUIRE_MESSAGE(out.flush(), "cannot write " << path);
-}
+
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -114,7 +101,7 @@ struct Autograder {
 };
 
 std::string environment(const Autograder& ag, const std::string& extra = "") {
-    return "env -u LAB_ROOT -u LAB_SHADER_DIR -u CI AUTOGRADER_ROOT=" + quote(ag.root.string()) +
+    return "env -u LAB_ROOT -u LAB_SHADER_DIR -u CI AUTOGRADER_ROOT=" + shell_quote(ag.root.string()) +
            " AUTOGRADER_USER=" + ag.user + " COURSE_SEED=1 " + extra + " ";
 }
 
@@ -128,21 +115,21 @@ std::string set_up(Autograder& ag) {
     fs::create_directories(ag.root / "results");
     const fs::path source = ag.root / "source";
     auto start = std::chrono::steady_clock::now();
-    auto r = fw::test::run_command("env -u LAB_ROOT " + quote(fw::test::bin_dir() + "/course") +
-                                   " gradescope --out " + quote(source.string()));
+    auto r = fw::test::run_command("env -u LAB_ROOT " + shell_quote(fw::test::bin_dir() + "/course") +
+                                   " gradescope --out " + shell_quote(source.string()));
     MESSAGE("course gradescope (exit " << r.exit_code << "):\n" << r.output);
     if (r.exit_code != 0) return "course gradescope failed";
 
-    std::istringstream list(read(source / "student_files.txt"));
+    std::istringstream list(read_text(source / "student_files.txt"));
     for (std::string line; std::getline(list, line);)
         if (!line.empty()) ag.student_files.push_back(line);
     if (ag.student_files.empty()) return "student_files.txt is empty";
     ag.expected = expected_from_data(source);
     if (ag.expected.victim.empty()) return "no labs/00_*/checkpoints.json: lab 0 is the victim";
     // Before any submission replaces them; the submissions are made from these.
-    for (const std::string& rel : ag.student_files) ag.solution_text[rel] = read(source / rel);
+    for (const std::string& rel : ag.student_files) ag.solution_text[rel] = read_text(source / rel);
     for (const char* script : {"setup.sh", "run_autograder"})
-        ag.scripts[script] = read(source / "grading" / "gradescope" / script);
+        ag.scripts[script] = read_text(source / "grading" / "gradescope" / script);
     // Gradescope copies run_autograder to /autograder and runs it from there.
     fs::copy_file(source / "run_autograder", ag.root / "run_autograder");
 
@@ -152,9 +139,9 @@ std::string set_up(Autograder& ag) {
         env +=
             " CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache "
             "CCACHE_NOHASHDIR=1 CCACHE_BASEDIR=" +
-            quote(source.string());
+            shell_quote(source.string());
     r = fw::test::run_command(environment(ag, env) + "bash " +
-                              quote((source / "setup.sh").string()));
+                              shell_quote((source / "setup.sh").string()));
     std::printf("[%5.1f s] setup.sh: exit %d\n", seconds_since(start), r.exit_code);
     if (r.exit_code != 0) {
         MESSAGE("setup.sh output (tail):\n" << tail(r.output));
@@ -169,20 +156,20 @@ Run submit(const Autograder& ag, const std::string& what,
            const std::map<std::string, std::string>& files, const std::string& env = "") {
     fs::remove_all(ag.root / "submission");
     fs::create_directories(ag.root / "submission");
-    for (const auto& [rel, text] : files) write(ag.root / "submission" / rel, text);
+    for (const auto& [rel, text] : files) write_text(ag.root / "submission" / rel, text);
     Run run;
     auto start = std::chrono::steady_clock::now();
     auto r = fw::test::run_command(environment(ag, env) + "bash " +
-                                   quote((ag.root / "run_autograder").string()));
+                                   shell_quote((ag.root / "run_autograder").string()));
     run.seconds = seconds_since(start);
     run.exit_code = r.exit_code;
     run.output = r.output;
     std::printf("[%5.1f s] run_autograder, %s: exit %d\n", run.seconds, what.c_str(), r.exit_code);
     std::fflush(stdout);
     const fs::path results = ag.root / "results" / "results.json";
-    if (fs::exists(results)) run.results = json::parse(read(results), nullptr, false);
+    if (fs::exists(results)) run.results = json::parse(read_text(results), nullptr, false);
     // summary.txt: "lab  score  checks  status...  seconds" under a header line.
-    std::istringstream table(read(ag.root / "results" / "grade" / "summary.txt"));
+    std::istringstream table(read_text(ag.root / "results" / "grade" / "summary.txt"));
     std::string line;
     std::getline(table, line);
     while (std::getline(table, line) && !line.empty()) {
@@ -324,14 +311,14 @@ TEST_CASE("gradescope: the folder holds the repository, the scripts and the stud
         INFO(script);
         CHECK((fs::status(source / script).permissions() & fs::perms::owner_exec) !=
               fs::perms::none);
-        CHECK(read(source / script) == text);
+        CHECK(read_text(source / script) == text);
     }
     CHECK(!fs::exists(source / ".git"));
     CHECK(fs::exists(source / "CMakeLists.txt"));
     for (const auto& [rel, text] : ag.solution_text) {
         INFO(rel);
         CHECK(!grading::solution_blocks(text, rel).empty());
-        CHECK(read(source / "student_versions" / rel) == grading::student_text(text, rel));
+        CHECK(read_text(source / "student_versions" / rel) == grading::student_text(text, rel));
     }
     // Every lab's checkpoints, hidden ones included: the autograder grades them.
     for (const auto& entry : fs::directory_iterator(repo / "labs")) {
@@ -346,8 +333,8 @@ TEST_CASE("gradescope: the folder holds the repository, the scripts and the stud
         INFO(copy);
         CHECK(seen == want);
     }
-    auto again = fw::test::run_command(quote(fw::test::bin_dir() + "/course") +
-                                       " gradescope --out " + quote(source.string()));
+    auto again = fw::test::run_command(shell_quote(fw::test::bin_dir() + "/course") +
+                                       " gradescope --out " + shell_quote(source.string()));
     fw::test::check_mentions(again.output, {"not empty", source.string()});
     CHECK(again.exit_code == 2);
 }
@@ -471,7 +458,7 @@ TEST_CASE("gradescope: submitted code can neither read references nor write resu
         {"@RESULTS@", (results / "results.json").string()},
         {"@GRADE_RESULTS@", (results / "grade" / "results.json").string()},
         {"@FORGED@", "{\"score\": 1000000, \"output\": \"forged by the submission\"}"}};
-    std::string code = read(fw::test::source_dir() + "/tests/grading/submissions/snoop.inc");
+    std::string code = read_text(fw::test::source_dir() + "/tests/grading/submissions/snoop.inc");
     for (const auto& [name, value] : values)
         for (size_t at; (at = code.find(name)) != std::string::npos;)
             code.replace(at, name.size(), json(value).dump());
@@ -481,17 +468,17 @@ TEST_CASE("gradescope: submitted code can neither read references nor write resu
                              "#include <cstdio>\n#include <cstring>\n"));
     // The lingering process gives up after 11 s.
     std::string log;
-    for (int i = 0; i < 40 && (log = read(report)).find("last") == std::string::npos; ++i)
+    for (int i = 0; i < 40 && (log = read_text(report)).find("last") == std::string::npos; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(500));
     MESSAGE("what the submission managed:\n" << log);
     CHECK_MESSAGE(log.find("at once") != std::string::npos, "the snooping code did not run");
     CHECK_MESSAGE(log.find("last") != std::string::npos, "the lingering process did not run");
     CHECK_MESSAGE(log.find("DONE") == std::string::npos, "some attempt succeeded");
     for (const fs::path& p : {results / "results.json", results / "grade" / "results.json"})
-        CHECK_MESSAGE(read(p).find("forged") == std::string::npos, p << " was forged");
+        CHECK_MESSAGE(read_text(p).find("forged") == std::string::npos, p << " was forged");
     // The results are course's: complete, and lab 0 scores as the solution does.
     Run now = run;
-    now.results = json::parse(read(results / "results.json"), nullptr, false);
+    now.results = json::parse(read_text(results / "results.json"), nullptr, false);
     check_complete(now, ag.expected);
     check_others_unaffected(ag, now);
     const Run& solution = solution_run(ag);
@@ -523,7 +510,7 @@ TEST_CASE("gradescope: the compiler cannot quote checkpoints or references back 
     const fs::path checkpoints =
         ag.root / "source" / "labs" / ag.expected.victim_dir / "checkpoints.json";
     // A hidden checkpoint's name: in the course's file, never in what students see.
-    const json doc = json::parse(read(checkpoints), nullptr, true, /*ignore_comments=*/true);
+    const json doc = json::parse(read_text(checkpoints), nullptr, true, /*ignore_comments=*/true);
     std::string hidden;
     for (const json& cp : doc["checkpoints"])
         if (cp.value("visibility", "") == "hidden") hidden = cp["name"].get<std::string>();

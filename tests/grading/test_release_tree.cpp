@@ -31,24 +31,12 @@ std::string grading::source_root() { return fw::test::source_dir(); }
 
 namespace {
 
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
+using fw::test::read_text;
+using fw::test::shell_quote;
+using fw::test::write_text;
 
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
-void write(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    REQUIRE_MESSAGE(out.flush(), "cannot write " << path);
-}
+
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -74,13 +62,13 @@ std::string jobs() { return std::to_string(std::max(1u, std::thread::hardware_co
 // ccache when it is installed.
 void build_tree(const fs::path& source, const std::string& targets) {
     const std::string build = (source / "build").string();
-    std::string configure = "cmake -S " + quote(source.string()) + " -B " + quote(build) +
+    std::string configure = "cmake -S " + shell_quote(source.string()) + " -B " + shell_quote(build) +
                             " -DCMAKE_BUILD_TYPE=Release -DLAB_WERROR=ON";
     if (run_command("command -v ccache").exit_code == 0)
         configure += " -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache";
     REQUIRE_MESSAGE(run(configure).exit_code == 0, "configuring " << source);
     REQUIRE_MESSAGE(
-        run("cmake --build " + quote(build) + " -j" + jobs() + " --target " + targets).exit_code ==
+        run("cmake --build " + shell_quote(build) + " -j" + jobs() + " --target " + targets).exit_code ==
             0,
         "building " << targets << " in " << source);
 }
@@ -100,18 +88,18 @@ Grade grade(const std::string& course, const std::string& lab, const std::string
     fs::remove_all(out);
     Grade g;
     auto r =
-        run("env -u LAB_ROOT -u LAB_SHADER_DIR " + env + " " + quote(course) + " grade " + labs +
-                " --lab " + quote(lab) + " --out " + quote(out.string()) + " --jobs " + jobs(),
+        run("env -u LAB_ROOT -u LAB_SHADER_DIR " + env + " " + shell_quote(course) + " grade " + labs +
+                " --lab " + shell_quote(lab) + " --out " + shell_quote(out.string()) + " --jobs " + jobs(),
             /*may_fail=*/true);
     g.exit_code = r.exit_code;
     g.output = r.output;
     if (!fs::exists(out / "results.json")) return g;
-    g.results = nlohmann::json::parse(read(out / "results.json"));
+    g.results = nlohmann::json::parse(read_text(out / "results.json"));
     for (const auto& t : g.results["tests"])
         (t["status"] == "passed" ? g.passed : g.failed).insert(t["name"].get<std::string>());
     // summary.txt: "lab  score  checks  status...  seconds" under a header
     // line, up to a blank line.
-    std::istringstream table(read(out / "summary.txt"));
+    std::istringstream table(read_text(out / "summary.txt"));
     std::string line;
     std::getline(table, line);
     while (std::getline(table, line) && !line.empty()) {
@@ -143,8 +131,8 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
     const fs::path source = fw::test::source_dir(), dir = fw::test::out_dir();
     const fs::path student = dir / "student";
     fs::remove_all(student);
-    auto r = run("env -u LAB_ROOT " + quote(fw::test::bin_dir() + "/course") + " release --out " +
-                 quote(student.string()));
+    auto r = run("env -u LAB_ROOT " + shell_quote(fw::test::bin_dir() + "/course") + " release --out " +
+                 shell_quote(student.string()));
     MESSAGE(r.output);
     REQUIRE(r.exit_code == 0);
 
@@ -153,7 +141,7 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
     for (const auto& e : fs::recursive_directory_iterator(student)) {
         if (!e.is_regular_file() || !grading::is_marked_source(e.path().string())) continue;
         ++code_files;
-        std::istringstream lines(read(e.path()));
+        std::istringstream lines(read_text(e.path()));
         std::string line;
         for (int n = 1; std::getline(lines, line); ++n)
             CHECK_MESSAGE(!std::regex_search(line, kMarker),
@@ -238,8 +226,8 @@ void sync_tree(const fs::path& source, const fs::path& copy,
         }
     for (const std::string& rel : files) {
         if (!fs::is_regular_file(source / rel)) continue;
-        std::string text = read(source / rel);
-        if (fs::exists(copy / rel) && read(copy / rel) == text) continue;
+        std::string text = read_text(source / rel);
+        if (fs::exists(copy / rel) && read_text(copy / rel) == text) continue;
         fs::create_directories((copy / rel).parent_path());
         fs::copy_file(source / rel, copy / rel, fs::copy_options::overwrite_existing);
     }
@@ -255,7 +243,7 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
     std::vector<Block> blocks;
     for (const std::string& file : files)
         if (grading::is_marked_source(file) && fs::is_regular_file(source / file)) {
-            auto found = grading::solution_blocks(read(source / file), file);
+            auto found = grading::solution_blocks(read_text(source / file), file);
             for (size_t i = 0; i < found.size(); ++i)
                 blocks.push_back({file, i, found[i].begin_line});
         }
@@ -286,17 +274,17 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
         if (!lab_dir.empty() && !std::count(labs.begin(), labs.end(), lab_dir))
             return "NOT GRADED: labs/" + lab_dir + " has no checkpoints.json";
         const bool shader = is_shader(b.file);
-        const std::string original = read(source / b.file);
+        const std::string original = read_text(source / b.file);
         const fs::path target =
             shader ? shaders / fs::path(b.file).lexically_relative("shaders") : tree / b.file;
-        write(target, grading::student_text_of_block(original, b.file, b.index));
+        write_text(target, grading::student_text_of_block(original, b.file, b.index));
         std::string result;
-        if (!shader && run("cmake --build " + quote((tree / "build").string()) + " -j" + jobs() +
+        if (!shader && run("cmake --build " + shell_quote((tree / "build").string()) + " -j" + jobs() +
                            " --target lab")
                                .exit_code != 0) {
             result = "the student version does not build";
         } else {
-            std::string env = shader ? "LAB_SHADER_DIR=" + quote(shaders.string()) : "";
+            std::string env = shader ? "LAB_SHADER_DIR=" + shell_quote(shaders.string()) : "";
             std::string child = shader ? lab : (tree / "build" / "bin" / "lab").string();
             Grade g = grade(course, child, lab_dir, dir / "block", env);
             size_t caught = 0;
@@ -310,7 +298,7 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
             for (const auto& [id, status] : g.status)
                 if (status != "ok") result += " [" + id + ": " + status + "]";
         }
-        write(target, original);
+        write_text(target, original);
         return result;
     };
 

@@ -276,18 +276,7 @@ TEST_CASE("geometry: checkpoints.json: its probes and stats hold for the solutio
         const fw::ParamValues params = fw::checkpoint_params(lab.lab, cp);
         modes.push_back(params.choice("mode"));
         const fw::RenderOutput out = lab.renderer.render(params, kSize, kSize);
-        for (const nlohmann::json& check : cp.checks) {
-            CAPTURE(check.dump());
-            if (check["kind"] == "probe") {
-                const auto c = check["color"];
-                CHECK(fw::test::probe_rgb(out.color, check["at"][0].get<int>(),
-                                          check["at"][1].get<int>(),
-                                          {c[0].get<float>(), c[1].get<float>(), c[2].get<float>()},
-                                          check.value("tolerance", 0.01f)));
-            } else if (check["kind"] == "stat") {
-                CHECK(out.stats.at(check["stat"].get<std::string>()) == check["equals"]);
-            }
-        }
+        fw::test::check_probes_and_stats(cp.checks, out);
     }
     CHECK(hidden > 0);
     CHECK(hidden < int(checkpoints.size()));

@@ -270,25 +270,7 @@ TEST_CASE("interpolation: checkpoints.json: its probes and stats hold for the so
         const fw::ParamValues params = fw::checkpoint_params(lab.lab, cp);
         scenes.push_back(params.choice("scene"));
         const fw::RenderOutput out = lab.renderer.render(params, kSize, kSize);
-        for (const nlohmann::json& check : cp.checks) {
-            CAPTURE(check.dump());
-            if (check["kind"] == "probe") {
-                const auto c = check["color"];
-                CHECK(fw::test::probe_rgb(out.color, check["at"][0].get<int>(),
-                                          check["at"][1].get<int>(),
-                                          {c[0].get<float>(), c[1].get<float>(), c[2].get<float>()},
-                                          check.value("tolerance", 0.01f)));
-            } else if (check["kind"] == "stat") {
-                // "a.b" names stats["a"]["b"].
-                const std::string path = check["stat"];
-                const size_t dot = path.find('.');
-                const nlohmann::json& value =
-                    dot == std::string::npos
-                        ? out.stats.at(path)
-                        : out.stats.at(path.substr(0, dot)).at(path.substr(dot + 1));
-                CHECK(value == check["equals"]);
-            }
-        }
+        fw::test::check_probes_and_stats(cp.checks, out);
     }
     CHECK(hidden > 0);
     CHECK(hidden < int(checkpoints.size()));

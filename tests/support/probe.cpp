@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "test_support.hpp"
 
@@ -63,6 +65,52 @@ void check_mentions(const std::string& message, const std::vector<std::string>& 
     for (const std::string& n : needles)
         CHECK_MESSAGE(message.find(n) != std::string::npos,
                       "expected the message to contain '" << n << "'");
+}
+
+void check_probes_and_stats(const nlohmann::json& checks, const RenderOutput& out) {
+    for (const nlohmann::json& check : checks) {
+        CAPTURE(check.dump());
+        if (check["kind"] == "probe") {
+            const int x = check["at"][0].get<int>(), y = check["at"][1].get<int>();
+            if (check.contains("depth")) {
+                CHECK(probe_depth(out.depth, x, y, check["depth"].get<float>(),
+                                  check.value("tolerance", 1e-5f)));
+            } else {
+                const nlohmann::json& c = check["color"];
+                CHECK(probe_rgb(out.color, x, y,
+                                {c[0].get<float>(), c[1].get<float>(), c[2].get<float>()},
+                                check.value("tolerance", 0.01f)));
+            }
+        } else if (check["kind"] == "stat") {
+            // "a.b" names stats["a"]["b"].
+            std::string path = check["stat"];
+            const nlohmann::json* value = &out.stats;
+            for (size_t dot; (dot = path.find('.')) != std::string::npos; path.erase(0, dot + 1))
+                value = &value->at(path.substr(0, dot));
+            CHECK(value->at(path) == check["equals"]);
+        }
+    }
+}
+
+std::string shell_quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    const std::filesystem::path p(path);
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    REQUIRE_MESSAGE(out.flush(), "cannot write " << path);
 }
 
 CommandResult run_command(const std::string& command) {

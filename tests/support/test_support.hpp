@@ -11,6 +11,7 @@
 #include "framework/context.hpp"
 #include "framework/error.hpp"
 #include "framework/image.hpp"
+#include "framework/render.hpp"
 
 namespace fw::test {
 
@@ -31,6 +32,13 @@ bool probe_rgb(const Image& img, int x, int y, glm::vec3 expected, float tol = 1
 // Depth probe, window-space depth in [0, 1].
 bool probe_depth(const DepthImage& img, int x, int y, float expected, float tol = 1e-5f);
 
+// The probe and stat checks of a checkpoint, as its data file writes them,
+// against a frame rendered here: colour probes ("at", "color", "tolerance"),
+// depth probes ("at", "depth", "tolerance") and stats ("stat" as a dotted path
+// into the stats, "equals"). Other kinds are left to the caller. A lab test
+// uses it to show that the file's expectations hold for the solution.
+void check_probes_and_stats(const nlohmann::json& checks, const RenderOutput& out);
+
 // The message of the E that `f` throws; a failed check if it throws nothing
 // (or something else, which then propagates).
 template <class E = fw::Error, class F>
@@ -46,6 +54,11 @@ std::string thrown(F&& f) {
 
 // Logs `message` and checks that it contains every one of `needles`.
 void check_mentions(const std::string& message, const std::vector<std::string>& needles);
+
+// Files and shell words for tests that run commands on copies of the tree.
+std::string shell_quote(const std::string& s);                     // 'it'\''s'
+std::string read_text(const std::string& path);                    // "" when unreadable
+void write_text(const std::string& path, const std::string& text);  // makes the parent folders
 
 // Runs a command through /bin/sh, capturing stdout and stderr together.
 struct CommandResult {
