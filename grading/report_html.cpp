@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <vector>
@@ -55,7 +56,9 @@ pre { margin: 0.3em 0; padding: 0.5em; background: #f2f2f2; border-radius: 4px;
       white-space: pre-wrap; word-break: break-word; font-size: 0.9em; }
 .images { display: flex; gap: 1em; flex-wrap: wrap; margin-top: 0.5em; }
 figure { margin: 0; flex: 1 1 300px; max-width: 440px; }
-figure img { width: 100%; image-rendering: pixelated; border: 1px solid #ccc; background: #888; }
+.images.small figure { flex: 0 1 200px; }
+.shot { width: 100%; background: #888 no-repeat center / contain; image-rendering: pixelated;
+        border: 1px solid #ccc; }
 figcaption { font-size: 0.85em; color: #555; text-align: center; }
 .missing { padding: 2em 0.5em; border: 1px dashed #c62828; color: #b3261e; font-size: 0.9em;
            text-align: center; word-break: break-all; }
@@ -93,26 +96,71 @@ std::string png_data_uri(const std::string& path, std::string& why) {
     return "data:image/png;base64," + base64(bytes);
 }
 
-std::string figure(const std::string& caption, const std::string& relative,
-                   const std::string& out_dir) {
-    std::string body;
-    if (relative.empty()) {
-        body = "<div class=\"missing\">no " + caption + " image</div>";
-    } else {
-        std::string why;
-        const std::string uri = png_data_uri(in_dir(out_dir, relative), why);
-        body = uri.empty() ? "<div class=\"missing\">image not available: " +
-                                 escape_markup(relative + " (" + why + ")") + "</div>"
-                           : "<img src=\"" + uri + "\" alt=\"" + caption + " image\">";
+// Each image file is embedded once, as the background of a CSS class in the
+// <style> block, and every figure that shows it names the class: the same
+// frame appears in every check of its checkpoint, and embedding it each time
+// would multiply the report's size.
+class ImageTable {
+public:
+    explicit ImageTable(const std::string& out_dir) : out_dir_(out_dir) {}
+
+    // The figure for `relative` (under out_dir), or a note saying why there is none.
+    std::string figure(const std::string& caption, const std::string& relative) {
+        std::string body;
+        if (relative.empty()) {
+            body = "<div class=\"missing\">no " + caption + " image</div>";
+        } else {
+            const Entry& e = entry(relative);
+            body = e.css_class.empty()
+                       ? "<div class=\"missing\">image not available: " +
+                             escape_markup(relative + " (" + e.why + ")") + "</div>"
+                       : "<div class=\"shot " + e.css_class + "\" role=\"img\" aria-label=\"" +
+                             caption + " image\" title=\"" + escape_markup(relative) +
+                             "\" style=\"aspect-ratio: " + e.aspect + "\"></div>";
+        }
+        return "<figure>" + body + "<figcaption>" + caption + "</figcaption></figure>";
     }
-    return "<figure>" + body + "<figcaption>" + caption + "</figcaption></figure>";
-}
+    const std::string& css() const { return css_; }
+
+private:
+    struct Entry {
+        std::string css_class, aspect, why;
+    };
+    const Entry& entry(const std::string& relative) {
+        auto found = entries_.find(relative);
+        if (found != entries_.end()) return found->second;
+        Entry e;
+        const std::string uri = png_data_uri(in_dir(out_dir_, relative), e.why);
+        if (!uri.empty()) {
+            e.css_class = "im" + std::to_string(entries_.size());
+            css_ += "." + e.css_class + " { background-image: url(" + uri + "); }\n";
+            e.aspect = png_aspect(in_dir(out_dir_, relative));
+        }
+        return entries_.emplace(relative, e).first->second;
+    }
+    // "W / H" from the PNG header (the IHDR chunk starts at byte 16).
+    static std::string png_aspect(const std::string& path) {
+        std::ifstream file(path, std::ios::binary);
+        unsigned char b[24] = {};
+        file.read(reinterpret_cast<char*>(b), sizeof b);
+        auto be32 = [&](int at) {
+            return (std::uint32_t(b[at]) << 24) | (std::uint32_t(b[at + 1]) << 16) |
+                   (std::uint32_t(b[at + 2]) << 8) | b[at + 3];
+        };
+        const std::uint32_t w = be32(16), h = be32(20);
+        return w && h ? std::to_string(w) + " / " + std::to_string(h) : "1 / 1";
+    }
+
+    const std::string& out_dir_;
+    std::map<std::string, Entry> entries_;
+    std::string css_;
+};
 
 std::string check_id(size_t lab, size_t check) {
     return "check-" + std::to_string(lab) + "-" + std::to_string(check);
 }
 
-std::string check_html(const CheckResult& c, const std::string& id, const std::string& out_dir) {
+std::string check_html(const CheckResult& c, const std::string& id, ImageTable& images) {
     std::ostringstream h;
     const char* state = c.passed ? "pass" : "fail";
     h << "<article class=\"check " << state << "\" id=\"" << id << "\">\n<h3><span class=\"badge "
@@ -123,15 +171,17 @@ std::string check_html(const CheckResult& c, const std::string& id, const std::s
     h << "<span class=\"points\">" << points(c.score) << " / " << points(c.max_score)
       << " points</span></h3>\n";
     if (!c.output.empty()) h << "<pre>" << escape_markup(c.output) << "</pre>\n";
-    if (!c.rendered.empty() || !c.expected.empty() || !c.difference.empty())
-        h << "<div class=\"images\">" << figure("rendered", c.rendered, out_dir)
-          << figure("expected", c.expected, out_dir) << figure("difference", c.difference, out_dir)
+    if (c.kind == "image")
+        h << "<div class=\"images\">" << images.figure("rendered", c.rendered)
+          << images.figure("expected", c.expected) << images.figure("difference", c.difference)
           << "</div>\n";
+    else if (!c.rendered.empty())  // probes and stats: the frame they were read from
+        h << "<div class=\"images small\">" << images.figure("rendered", c.rendered) << "</div>\n";
     h << "</article>\n";
     return h.str();
 }
 
-std::string lab_html(const LabResult& lab, size_t index, const std::string& out_dir) {
+std::string lab_html(const LabResult& lab, size_t index, ImageTable& images) {
     const bool ok = lab.status == "ok";
     std::ostringstream h;
     h << "<section class=\"lab" << (lab.passed() ? "" : " fail") << "\" id=\"lab-" << index
@@ -149,7 +199,7 @@ std::string lab_html(const LabResult& lab, size_t index, const std::string& out_
     std::iota(order.begin(), order.end(), 0);
     std::stable_partition(order.begin(), order.end(),
                           [&](size_t i) { return !lab.checks[i].passed; });
-    for (size_t i : order) h << check_html(lab.checks[i], check_id(index, i), out_dir);
+    for (size_t i : order) h << check_html(lab.checks[i], check_id(index, i), images);
     h << "</section>\n";
     return h.str();
 }
@@ -201,14 +251,16 @@ std::string overview_html(const GradeRun& run) {
 }  // namespace
 
 std::string html_report(const GradeRun& run, const std::string& out_dir) {
+    // The body first: it decides which images the <style> block must hold.
+    ImageTable images(out_dir);
+    std::ostringstream body;
+    body << "<h1>Grading report</h1>\n" << overview_html(run);
+    for (size_t li = 0; li < run.labs.size(); ++li) body << lab_html(run.labs[li], li, images);
     std::ostringstream h;
     h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<title>Grading report: " << points(run.score()) << " / " << points(run.max_score())
-      << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
-      << "<h1>Grading report</h1>\n"
-      << overview_html(run);
-    for (size_t li = 0; li < run.labs.size(); ++li) h << lab_html(run.labs[li], li, out_dir);
-    h << "</body>\n</html>\n";
+      << "</title>\n<style>" << kStyle << images.css() << "</style>\n</head>\n<body>\n"
+      << body.str() << "</body>\n</html>\n";
     return h.str();
 }
 

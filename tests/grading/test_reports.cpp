@@ -203,8 +203,12 @@ TEST_CASE("index.html is self-contained and shows each check with its images") {
     const std::string uri = "data:image/png;base64,";
     CHECK(count(html, uri) == 3);
     for (const char* external : {"src=\"http", "href=\"http", "src=\"//", "href=\"//", "<link",
-                                 "<script", "url(", "@import"})
+                                 "<script", "@import"})
         CHECK_MESSAGE(html.find(external) == std::string::npos, "external reference " << external);
+    // Images are CSS backgrounds, each embedded once: url() only ever holds data.
+    for (size_t at = html.find("url("); at != std::string::npos; at = html.find("url(", at + 1))
+        CHECK_MESSAGE(html.compare(at, 4 + uri.size(), "url(" + uri) == 0,
+                      "a url() that is not embedded data: " << html.substr(at, 40));
     for (size_t at = html.find("href=\""); at != std::string::npos;
          at = html.find("href=\"", at + 1))
         CHECK_MESSAGE(html[at + 6] == '#', "a link out of the page: " << html.substr(at, 40));
@@ -225,7 +229,7 @@ TEST_CASE("index.html is self-contained and shows each check with its images") {
     std::set<std::string> decoded;
     for (size_t at = html.find(uri); at != std::string::npos; at = html.find(uri, at + 1)) {
         const size_t begin = at + uri.size();
-        decoded.insert(base64_decode(html.substr(begin, html.find('"', begin) - begin)));
+        decoded.insert(base64_decode(html.substr(begin, html.find_first_of("\")", begin) - begin)));
     }
     CHECK(decoded == files);
 
