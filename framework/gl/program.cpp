@@ -1,6 +1,7 @@
 #include "framework/gl/program.hpp"
 
 #include <cctype>
+#include <map>
 
 #include "framework/error.hpp"
 #include "framework/gl/debug.hpp"
@@ -163,11 +164,13 @@ const UniformInfo* Program::uniform(const std::string& name) const {
 bool Program::has_uniform(const std::string& name) const { return uniform(name) != nullptr; }
 
 std::string Program::describe_uniforms() const {
+    std::map<std::string, const UniformInfo*> sorted;  // by name, as messages list them
+    for (const auto& [key, info] : uniforms_)
+        if (key == info.name) sorted[key] = &info;  // aliases: "u_w" and "u_w[2]" for "u_w[0]"
     std::string out;
-    for (const auto& [key, info] : uniforms_) {
-        if (key != info.name) continue;  // aliases: "u_w" and "u_w[2]" for "u_w[0]"
-        out += (out.empty() ? "" : ", ") + key + ": " + glsl_type_name(info.type);
-        if (info.is_array) out += "[" + std::to_string(info.array_size) + "]";
+    for (const auto& [key, info] : sorted) {
+        out += (out.empty() ? "" : ", ") + key + ": " + glsl_type_name(info->type);
+        if (info->is_array) out += "[" + std::to_string(info->array_size) + "]";
     }
     return out.empty() ? "(none)" : out;
 }

@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -105,7 +106,8 @@ private:
     std::vector<std::string> files_;
     std::string label_;
     // Every active uniform, plus for arrays "name" and each "name[i]".
-    std::map<std::string, UniformInfo> uniforms_;
+    // Looked up on every set(): hashed, not ordered (describe_uniforms sorts).
+    std::unordered_map<std::string, UniformInfo> uniforms_;
     // (file, source) of each stage, to tell "optimised out" from "misspelt".
     std::vector<std::pair<std::string, std::string>> sources_;
 };
