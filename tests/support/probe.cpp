@@ -27,8 +27,8 @@ std::string out_dir() {
 
 bool probe_rgb(const Image& img, int x, int y, glm::vec3 expected, float tol) {
     if (x < 0 || y < 0 || x >= img.width || y >= img.height) {
-        MESSAGE("probe (" << x << ", " << y << ") is outside the " << img.width << "x"
-                          << img.height << " image");
+        MESSAGE("probe (" << x << ", " << y << ") is outside the " << img.width << "x" << img.height
+                          << " image");
         return false;
     }
     Rgba8 p = img.at(x, y);
@@ -65,6 +65,21 @@ void check_mentions(const std::string& message, const std::vector<std::string>& 
     for (const std::string& n : needles)
         CHECK_MESSAGE(message.find(n) != std::string::npos,
                       "expected the message to contain '" << n << "'");
+}
+
+void for_each_checkpoint(const RegisteredLab& lab, LabRenderer& renderer, size_t min_count,
+                         const CheckpointVisitor& visit) {
+    const std::vector<Checkpoint> checkpoints = load_checkpoints(lab);
+    CHECK(checkpoints.size() >= min_count);
+    size_t hidden = 0;
+    for (const Checkpoint& cp : checkpoints) {
+        CAPTURE(cp.name);
+        hidden += cp.visibility == "hidden";
+        const ParamValues params = checkpoint_params(lab, cp);
+        visit(cp, params, renderer.render(params, 512, 512));
+    }
+    CHECK(hidden > 0);
+    CHECK(hidden < checkpoints.size());
 }
 
 void check_probes_and_stats(const nlohmann::json& checks, const RenderOutput& out) {

@@ -4,10 +4,12 @@
 
 #include <doctest/doctest.h>
 
+#include <functional>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
+#include "framework/checkpoints.hpp"
 #include "framework/context.hpp"
 #include "framework/error.hpp"
 #include "framework/image.hpp"
@@ -39,6 +41,15 @@ bool probe_depth(const DepthImage& img, int x, int y, float expected, float tol 
 // uses it to show that the file's expectations hold for the solution.
 void check_probes_and_stats(const nlohmann::json& checks, const RenderOutput& out);
 
+// Renders every checkpoint of the lab's data file at 512 x 512 and hands each,
+// with its resolved parameters and the frame, to `visit` (the checkpoint's
+// name is captured for every check made there). Checks that the file has at
+// least `min_count` checkpoints and that some, but not all, are hidden.
+using CheckpointVisitor =
+    std::function<void(const Checkpoint&, const ParamValues&, const RenderOutput&)>;
+void for_each_checkpoint(const RegisteredLab& lab, LabRenderer& renderer, size_t min_count,
+                         const CheckpointVisitor& visit);
+
 // The message of the E that `f` throws; a failed check if it throws nothing
 // (or something else, which then propagates).
 template <class E = fw::Error, class F>
@@ -56,8 +67,8 @@ std::string thrown(F&& f) {
 void check_mentions(const std::string& message, const std::vector<std::string>& needles);
 
 // Files and shell words for tests that run commands on copies of the tree.
-std::string shell_quote(const std::string& s);                     // 'it'\''s'
-std::string read_text(const std::string& path);                    // "" when unreadable
+std::string shell_quote(const std::string& s);                      // 'it'\''s'
+std::string read_text(const std::string& path);                     // "" when unreadable
 void write_text(const std::string& path, const std::string& text);  // makes the parent folders
 
 // Runs a command through /bin/sh, capturing stdout and stderr together.
