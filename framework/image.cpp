@@ -79,6 +79,22 @@ void write_png(const std::string& path, const Image& img) {
 
 Image read_png(const std::string& path) { return decode_png(read_file(path, "PNG"), path); }
 
+bool png_header_size(const std::string& bytes, int& width, int& height) {
+    static const char signature[] = "\x89PNG\r\n\x1a\n";
+    if (bytes.size() < 24 || bytes.compare(0, 8, signature, 8) != 0) return false;
+    auto be32 = [&](size_t at) {
+        std::uint32_t v = 0;
+        for (size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+        return v;
+    };
+    // A PNG's sizes are below 2^31; larger values are not a PNG's.
+    const std::uint32_t w = be32(16), h = be32(20);
+    if (w > 0x7fffffffu || h > 0x7fffffffu) return false;
+    width = static_cast<int>(w);
+    height = static_cast<int>(h);
+    return true;
+}
+
 Image decode_png(const std::string& bytes, const std::string& name) {
     static const char signature[] = "\x89PNG\r\n\x1a\n";
     if (bytes.compare(0, 8, signature, 8) != 0)

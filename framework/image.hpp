@@ -45,6 +45,9 @@ void write_png(const std::string& path, const Image& img);
 Image read_png(const std::string& path);
 // The same from a PNG file's bytes already in memory; `name` is for messages.
 Image decode_png(const std::string& bytes, const std::string& name);
+// The width and height a PNG's header (its IHDR chunk) states, read without
+// decoding anything; false when `bytes` does not start like a PNG.
+bool png_header_size(const std::string& bytes, int& width, int& height);
 
 // PFM, single channel ("Pf"), little-endian float32, rows bottom first:
 // header "Pf\n<width> <height>\n-1.0\n". read_pfm accepts either byte order

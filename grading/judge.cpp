@@ -44,24 +44,6 @@ std::string tuple(const std::vector<double>& v) {
     return s + ")";
 }
 
-// Shown when a file does not start like a PNG: its first bytes, escaped.
-std::string first_bytes(const std::string& bytes) {
-    std::string s;
-    for (size_t i = 0; i < bytes.size() && i < 16; ++i) {
-        unsigned char c = static_cast<unsigned char>(bytes[i]);
-        char buf[8];
-        std::snprintf(buf, sizeof buf, c >= 32 && c < 127 && c != '"' ? "%c" : "\\x%02x", c);
-        s += buf;
-    }
-    return "\"" + s + "\"";
-}
-
-std::uint32_t be32(const std::string& b, size_t at) {
-    std::uint32_t v = 0;
-    for (size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(b[at + i]);
-    return v;
-}
-
 // One checkpoint's frame, each output read once for all its checks.
 class Frame {
 public:
@@ -330,39 +312,6 @@ void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, uns
 }
 
 }  // namespace
-
-bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Image& image,
-                   std::string& why, std::string* png_bytes) {
-    const std::string name = render.checkpoint + ".png";
-    // An uncompressed PNG: 4 bytes a pixel, a filter byte a row, chunk overhead.
-    const std::uint64_t limit =
-        std::uint64_t(render.width) * render.height * 4 + render.height + kMiB;
-    std::string bytes;
-    if (!outputs.read(name, limit, bytes, why)) return false;
-    static const std::string signature = "\x89PNG\r\n\x1a\n";
-    if (bytes.size() < 24 || bytes.compare(0, 8, signature) != 0) {
-        why = name + " is not a PNG: it starts with " + first_bytes(bytes);
-        return false;
-    }
-    // The size in the header, checked before decoding anything.
-    const std::uint32_t w = be32(bytes, 16), h = be32(bytes, 20);
-    if (w != std::uint32_t(render.width) || h != std::uint32_t(render.height)) {
-        why = name + " is " + std::to_string(w) + "x" + std::to_string(h) +
-              ", but course asked for " + std::to_string(render.width) + "x" +
-              std::to_string(render.height);
-        return false;
-    }
-    try {
-        // Decoded from the bytes read (and size-checked) above, never from the
-        // file again: a process the child left behind could have replaced it.
-        image = fw::decode_png(bytes, name);
-    } catch (const fw::Error& e) {
-        why = name + " is not a PNG: " + e.what();
-        return false;
-    }
-    if (png_bytes) *png_bytes = std::move(bytes);
-    return true;
-}
 
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    const ChildOutputs& outputs, const std::string& out_dir) {

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <vector>
 
+#include "framework/image.hpp"
 #include "grading/report_text.hpp"
 
 namespace grading::report {
@@ -138,17 +139,15 @@ private:
         }
         return entries_.emplace(relative, e).first->second;
     }
-    // "W / H" from the PNG header (the IHDR chunk starts at byte 16).
+    // "W / H" from the PNG header, for the figure's shape.
     static std::string png_aspect(const std::string& path) {
         std::ifstream file(path, std::ios::binary);
-        unsigned char b[24] = {};
-        file.read(reinterpret_cast<char*>(b), sizeof b);
-        auto be32 = [&](int at) {
-            return (std::uint32_t(b[at]) << 24) | (std::uint32_t(b[at + 1]) << 16) |
-                   (std::uint32_t(b[at + 2]) << 8) | b[at + 3];
-        };
-        const std::uint32_t w = be32(16), h = be32(20);
-        return w && h ? std::to_string(w) + " / " + std::to_string(h) : "1 / 1";
+        std::string head(24, '\0');
+        file.read(head.data(), static_cast<std::streamsize>(head.size()));
+        int w = 0, h = 0;
+        return fw::png_header_size(head, w, h) && w > 0 && h > 0
+                   ? std::to_string(w) + " / " + std::to_string(h)
+                   : "1 / 1";
     }
 
     const std::string& out_dir_;

@@ -92,6 +92,21 @@ TEST_CASE("read_png converts grey and RGB files to RGBA") {
     CHECK(c.at(1, 0) == Rgba8{4, 5, 6, 255});
 }
 
+TEST_CASE("png_header_size reads the size without decoding, and refuses what is not a PNG") {
+    const std::string path = fw::test::out_dir() + "/size.png";
+    fw::write_png(path, fw::Image(37, 11, {1, 2, 3, 255}));
+    const std::string bytes = fw::test::read_text(path);
+    int w = 0, h = 0;
+    REQUIRE(fw::png_header_size(bytes, w, h));
+    CHECK(w == 37);
+    CHECK(h == 11);
+    CHECK_FALSE(fw::png_header_size(bytes.substr(0, 20), w, h));
+    CHECK_FALSE(fw::png_header_size("GIF89a and then some more bytes", w, h));
+    std::string huge = bytes;
+    huge[16] = '\xff';  // a width of 2^32 - x: no PNG's
+    CHECK_FALSE(fw::png_header_size(huge, w, h));
+}
+
 TEST_CASE("PNG errors name the path") {
     std::string missing = fw::test::out_dir() + "/no_such.png";
     std::string msg = error_of([&] { fw::read_png(missing); });
