@@ -16,25 +16,13 @@ namespace interpolation_test {
 
 constexpr int kSize = 512;
 
-using Settings = std::vector<std::pair<std::string, std::string>>;
+using fw::test::Settings;
 
-// The lab, created once per test case, rendering 512 x 512 frames.
-struct Lab {
-    const fw::RegisteredLab& lab = fw::find_lab("interpolation");
-    fw::LabRenderer renderer{lab, fw::test::context_info()};
-
-    fw::RenderOutput render(const Settings& settings) {
-        fw::ParamValues params = fw::default_params(lab);
-        for (const auto& [name, value] : settings) params.set(name, value);
-        return renderer.render(params, kSize, kSize);
-    }
+struct Lab : fw::test::LabUnderTest {
+    Lab() : LabUnderTest("interpolation") {}
 };
 
-// Pixel (x, y) as (r, g, b) in [0, 1].
-inline glm::vec3 rgb(const fw::Image& img, int x, int y) {
-    const fw::Rgba8 p = img.at(x, y);
-    return glm::vec3(p.r, p.g, p.b) / 255.0f;
-}
+inline glm::vec3 rgb(const fw::Image& img, int x, int y) { return fw::test::rgb_at(img, x, y); }
 
 inline float max_difference(glm::vec3 a, glm::vec3 b) {
     const glm::vec3 d = glm::abs(a - b);

@@ -18,28 +18,19 @@ using namespace geometry_test;
 
 namespace {
 
-using Settings = std::vector<std::pair<std::string, std::string>>;
+using fw::test::Settings;
 
 // The lab, created once per test case.
-struct Geometry {
-    const fw::RegisteredLab& lab = fw::find_lab("geometry");
-    fw::LabRenderer renderer{lab, fw::test::context_info()};
-
+struct Geometry : fw::test::LabUnderTest {
+    Geometry() : LabUnderTest("geometry") {}
+    // Square frames of `size`.
     fw::RenderOutput render(const Settings& settings, int size = kSize) {
-        fw::ParamValues params = fw::default_params(lab);
-        for (const auto& [name, value] : settings) params.set(name, value);
-        return renderer.render(params, size, size);
+        return LabUnderTest::render(settings, size, size);
     }
 };
 
-glm::vec3 rgb(const fw::Image& img, int x, int y) {
-    const fw::Rgba8 p = img.at(x, y);
-    return glm::vec3(p.r, p.g, p.b) / 255.0f;
-}
-
-bool near(glm::vec3 a, glm::vec3 b, float tol) {
-    return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(tol)));
-}
+glm::vec3 rgb(const fw::Image& img, int x, int y) { return fw::test::rgb_at(img, x, y); }
+using fw::test::near;
 
 bool covered(const fw::RenderOutput& out, int x, int y) { return out.depth.at(x, y) < 1.0f; }
 

@@ -23,18 +23,10 @@ const glm::vec3 kYellow{1, 1, 0}, kCyan{0, 1, 1}, kMagenta{1, 0, 1};
 // NDC -> the window pixel whose square contains that point: (ndc + 1) / 2 * W.
 int pixel(float ndc) { return static_cast<int>(std::floor((ndc + 1.0f) * 0.5f * kSize)); }
 
-using Settings = std::vector<std::pair<std::string, std::string>>;
+using fw::test::Settings;
 
-// The lab, created once per test case, rendering 512 x 512 frames.
-struct Pipeline {
-    const fw::RegisteredLab& lab = fw::find_lab("pipeline");
-    fw::LabRenderer renderer{lab, fw::test::context_info()};
-
-    fw::RenderOutput render(const Settings& settings) {
-        fw::ParamValues params = fw::default_params(lab);
-        for (const auto& [name, value] : settings) params.set(name, value);
-        return renderer.render(params, kSize, kSize);
-    }
+struct Pipeline : fw::test::LabUnderTest {
+    Pipeline() : LabUnderTest("pipeline") {}
 };
 
 long differing_pixels(const fw::Image& a, const fw::Image& b) {

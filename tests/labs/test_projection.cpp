@@ -28,20 +28,10 @@ const glm::vec3 kCardColors[5] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1
 // (0, 0, -20), leaning back by 30 degrees about x.
 const glm::vec3 kZRed{0.9f, 0.2f, 0.2f}, kZBlue{0.2f, 0.2f, 0.9f};
 
-using Settings = std::vector<std::pair<std::string, std::string>>;
+using fw::test::Settings;
 
-struct Projection {
-    const fw::RegisteredLab& lab = fw::find_lab("projection");
-    fw::LabRenderer renderer{lab, fw::test::context_info()};
-
-    fw::ParamValues params(const Settings& settings) const {
-        fw::ParamValues p = fw::default_params(lab);
-        for (const auto& [name, value] : settings) p.set(name, value);
-        return p;
-    }
-    fw::RenderOutput render(const Settings& settings, int w = kSize, int h = kSize) {
-        return renderer.render(params(settings), w, h);
-    }
+struct Projection : fw::test::LabUnderTest {
+    Projection() : LabUnderTest("projection") {}
 };
 
 // The camera the sheet defines for these parameters, from GLM.

@@ -21,7 +21,7 @@ using namespace tessellation_test;
 
 namespace {
 
-using Settings = std::vector<std::pair<std::string, std::string>>;
+using fw::test::Settings;
 
 constexpr int kSize = 512;
 const glm::vec3 kBlack{0.0f}, kWhite{1.0f}, kFill{0.2f, 0.3f, 0.8f};
@@ -37,14 +37,11 @@ const std::pair<const char*, Spacing> kSpacings[] = {{"equal", Spacing::Equal},
                                                      {"fractional_odd", Spacing::FractionalOdd}};
 
 // The lab, created once per test case.
-struct Tessellation {
-    const fw::RegisteredLab& lab = fw::find_lab("tessellation");
-    fw::LabRenderer renderer{lab, fw::test::context_info()};
-
+struct Tessellation : fw::test::LabUnderTest {
+    Tessellation() : LabUnderTest("tessellation") {}
+    // Square frames of `size`.
     fw::RenderOutput render(const Settings& settings, int size = kSize) {
-        fw::ParamValues params = fw::default_params(lab);
-        for (const auto& [name, value] : settings) params.set(name, value);
-        return renderer.render(params, size, size);
+        return LabUnderTest::render(settings, size, size);
     }
     long primitives(const std::string& scene, float inner, float outer, const char* spacing) {
         const fw::RenderOutput out = render({{"scene", scene},
@@ -64,14 +61,8 @@ long expected_primitives(const std::string& scene, float inner, float outer, Spa
     return scene == "sphere" ? 20 * per_patch : per_patch;
 }
 
-glm::vec3 rgb(const fw::Image& img, int x, int y) {
-    const fw::Rgba8 p = img.at(x, y);
-    return glm::vec3(p.r, p.g, p.b) / 255.0f;
-}
-
-bool near(glm::vec3 a, glm::vec3 b, float tol) {
-    return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(tol)));
-}
+glm::vec3 rgb(const fw::Image& img, int x, int y) { return fw::test::rgb_at(img, x, y); }
+using fw::test::near;
 
 bool covered(const fw::RenderOutput& out, int x, int y) { return out.depth.at(x, y) < 1.0f; }
 

@@ -67,6 +67,28 @@ void check_mentions(const std::string& message, const std::vector<std::string>& 
                       "expected the message to contain '" << n << "'");
 }
 
+LabUnderTest::LabUnderTest(const std::string& id)
+    : lab(find_lab(id)), renderer(lab, context_info()) {}
+
+ParamValues LabUnderTest::params(const Settings& settings) const {
+    ParamValues p = default_params(lab);
+    for (const auto& [name, value] : settings) p.set(name, value);
+    return p;
+}
+
+RenderOutput LabUnderTest::render(const Settings& settings, int width, int height) {
+    return renderer.render(params(settings), width, height);
+}
+
+glm::vec3 rgb_at(const Image& img, int x, int y) {
+    const Rgba8 p = img.at(x, y);
+    return glm::vec3(p.r, p.g, p.b) / 255.0f;
+}
+
+bool near(glm::vec3 a, glm::vec3 b, float tol) {
+    return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(tol)));
+}
+
 void for_each_checkpoint(const RegisteredLab& lab, LabRenderer& renderer, size_t min_count,
                          const CheckpointVisitor& visit) {
     const std::vector<Checkpoint> checkpoints = load_checkpoints(lab);

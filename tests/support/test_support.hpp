@@ -7,6 +7,7 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "framework/checkpoints.hpp"
@@ -40,6 +41,23 @@ bool probe_depth(const DepthImage& img, int x, int y, float expected, float tol 
 // into the stats, "equals"). Other kinds are left to the caller. A lab test
 // uses it to show that the file's expectations hold for the solution.
 void check_probes_and_stats(const nlohmann::json& checks, const RenderOutput& out);
+
+// A lab and its renderer in the test's context, created once per test case.
+using Settings = std::vector<std::pair<std::string, std::string>>;  // name, value as --set takes it
+struct LabUnderTest {
+    explicit LabUnderTest(const std::string& id);
+    // The defaults, then `settings`.
+    ParamValues params(const Settings& settings) const;
+    RenderOutput render(const Settings& settings, int width = 512, int height = 512);
+
+    const RegisteredLab& lab;
+    LabRenderer renderer;
+};
+
+// Pixel (x, y) of `img` as (r, g, b) in [0, 1]; whether two colours are
+// within `tol` on every channel.
+glm::vec3 rgb_at(const Image& img, int x, int y);
+bool near(glm::vec3 a, glm::vec3 b, float tol);
 
 // Renders every checkpoint of the lab's data file at 512 x 512 and hands each,
 // with its resolved parameters and the frame, to `visit` (the checkpoint's
