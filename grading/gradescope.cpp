@@ -42,16 +42,6 @@ constexpr const char* kScripts[] = {"setup.sh", "run_autograder"};
 constexpr const char* kStudentFiles = "student_files.txt";
 constexpr const char* kStudentVersions = "student_versions";
 
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw fw::Error("cannot read '" + path.string() +
-                        "': check that it exists and is readable");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 void write_file(const fs::path& path, const std::string& text, fs::perms mode) {
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,9 @@ struct ReleaseSummary {
 // untracked files git does not ignore) in a git checkout, else every file
 // outside build*/, .git/ and .cache/.
 std::vector<std::string> project_files(const std::string& source);
+
+// A project file's whole text; throws fw::Error naming it when unreadable.
+std::string read_file(const std::filesystem::path& path);
 
 // Writes the student version of `source` into `out` (which must not exist or
 // be empty), keeping file modes. Every file is transformed and checked before

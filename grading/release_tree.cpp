@@ -21,16 +21,6 @@ namespace grading {
 
 namespace {
 
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw fw::Error("cannot read '" + path.string() +
-                        "': check that it exists and is readable");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::string shell_quote(const std::string& s) {
     std::string q = "'";
     for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -45,6 +35,16 @@ struct Planned {
 };
 
 }  // namespace
+
+std::string read_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw fw::Error("cannot read '" + path.string() +
+                        "': check that it exists and is readable");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
 
 std::vector<std::string> project_files(const std::string& source) {
     std::vector<std::string> files;
