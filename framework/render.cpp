@@ -13,6 +13,8 @@ namespace fw {
 LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
     : registered_(lab), context_(std::move(context)), lab_(lab.create()) {
     enable_debug_output();
+    primitives_ = std::make_unique<Query>(GL_PRIMITIVES_GENERATED, "primitives generated");
+    elapsed_ = std::make_unique<Query>(GL_TIME_ELAPSED, "frame time");
     lab_->init(programs_);
     check_gl(("init of lab " + lab.info.id).c_str());
 }
@@ -34,13 +36,11 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-    Query primitives(GL_PRIMITIVES_GENERATED, "primitives generated");
-    Query elapsed(GL_TIME_ELAPSED, "frame time");
-    primitives.begin();
-    elapsed.begin();
+    primitives_->begin();
+    elapsed_->begin();
     lab_->draw(params, Frame{width, height, 0.0});
-    elapsed.end();
-    primitives.end();
+    elapsed_->end();
+    primitives_->end();
     glFinish();
     double render_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -58,9 +58,9 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
         {"gl_renderer", context_.gl_renderer},
         {"width", width},
         {"height", height},
-        {"primitives_generated", primitives.result()},
+        {"primitives_generated", primitives_->result()},
         {"render_ms", render_ms},
-        {"gpu_ms", static_cast<double>(elapsed.result()) / 1e6},
+        {"gpu_ms", static_cast<double>(elapsed_->result()) / 1e6},
         {"lab_stats", lab_->stats(params)},
     };
     check_gl(("read-back of lab " + registered_.info.id).c_str());

@@ -15,6 +15,7 @@
 namespace fw {
 
 class Framebuffer;
+class Query;
 
 struct RenderOutput {
     Image color;
@@ -42,6 +43,8 @@ private:
     ProgramLibrary programs_;
     std::unique_ptr<Lab> lab_;
     std::unique_ptr<Framebuffer> framebuffer_;
+    // Created once, begun and ended around every frame's draw.
+    std::unique_ptr<Query> primitives_, elapsed_;
 };
 
 // "512x384" -> (512, 384); throws UsageError.
