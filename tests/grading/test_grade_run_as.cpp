@@ -25,6 +25,29 @@ void skip_unless_possible() {
     }
 }
 
+// Where the user can reach what it runs. The build may sit below a folder
+// only root can enter (a clone in a mktemp directory is 0700), so the test
+// stages `lab`, the fake and the shaders in a fresh world-searchable folder
+// and points LAB_SHADER_DIR there; LAB_ROOT trees are made inside it too.
+struct Staged {
+    std::string dir, lab, fake, env;
+};
+
+Staged stage() {
+    char name[] = "/tmp/course-run-as-XXXXXX";
+    REQUIRE(mkdtemp(name) != nullptr);
+    Staged s{name, std::string(name) + "/lab", std::string(name) + "/fake_lab", ""};
+    chmod(name, 0755);
+    fs::copy_file(fw::test::bin_dir() + "/lab", s.lab);
+    fs::copy_file(fake_lab(), s.fake);
+    fs::copy(fw::test::source_dir() + "/shaders", s.dir + "/shaders", fs::copy_options::recursive);
+    for (const auto& e : fs::recursive_directory_iterator(s.dir))
+        chmod(e.path().c_str(),
+              e.is_directory() ? 0755 : (e.path() == s.lab || e.path() == s.fake ? 0755 : 0644));
+    s.env = "LAB_SHADER_DIR=" + s.dir + "/shaders";
+    return s;
+}
+
 mode_t mode_of(const std::string& path) {
     struct stat st {};
     stat(path.c_str(), &st);
@@ -35,9 +58,10 @@ mode_t mode_of(const std::string& path) {
 
 TEST_CASE("course grade --run-as nobody: full marks, references locked away") {
     skip_unless_possible();
-    const std::string tree = make_tree(fw::test::out_dir() + "/tree", false);
-    const std::string out = fw::test::out_dir() + "/report";
-    Graded g = grade("LAB_ROOT=" + tree, "pipeline --run-as nobody", out);
+    const Staged st = stage();
+    const std::string tree = make_tree(st.dir + "/tree", false);
+    const std::string out = st.dir + "/report";
+    Graded g = grade(st.env + " LAB_ROOT=" + tree, "pipeline --run-as nobody --lab " + st.lab, out);
     CHECK(g.exit_code == 0);
     REQUIRE(g.results.is_object());
     CHECK(g.results["score"] == g.results["max_score"]);
@@ -48,15 +72,16 @@ TEST_CASE("course grade --run-as nobody: full marks, references locked away") {
 
 TEST_CASE("course grade --run-as nobody: the child cannot read a reference or write the report") {
     skip_unless_possible();
-    const std::string tree = make_tree(fw::test::out_dir() + "/tree", false);
-    const std::string out = fw::test::out_dir() + "/report";
+    const Staged st = stage();
+    const std::string tree = make_tree(st.dir + "/tree", false);
+    const std::string out = st.dir + "/report";
     const std::string reference = tree + "/labs/00_pipeline/reference/order_depth.png";
     REQUIRE(fs::exists(reference));
     Graded g =
-        grade("LAB_ROOT=" + tree +
+        grade(st.env + " LAB_ROOT=" + tree +
                   " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=snoop FAKE_LAB_SNOOP_READ=" + reference +
                   " FAKE_LAB_SNOOP_WRITE=" + out,
-              "pipeline --run-as nobody --lab " + fake_lab(), out);
+              "pipeline --run-as nobody --lab " + st.fake, out);
     CHECK(g.exit_code == 1);
     // The fake's own report of what it tried, from the log course prints.
     fw::test::check_mentions(g.output,
@@ -68,13 +93,15 @@ TEST_CASE("course grade --run-as nobody: the child cannot read a reference or wr
 
 TEST_CASE("course grade --run-as: an output directory the user could write is refused") {
     skip_unless_possible();
-    const std::string tree = make_tree(fw::test::out_dir() + "/tree", false);
-    const std::string out = fw::test::out_dir() + "/open";
+    const Staged st = stage();
+    const std::string tree = make_tree(st.dir + "/tree", false);
+    const std::string out = st.dir + "/open";
     fs::remove_all(out);
     fs::create_directories(out);
     chmod(out.c_str(), 0777);
-    const fw::test::CommandResult r = fw::test::run_command(
-        "LAB_ROOT=" + tree + " " + course() + " grade pipeline --run-as nobody --out " + out);
+    const fw::test::CommandResult r =
+        fw::test::run_command(st.env + " LAB_ROOT=" + tree + " " + course() +
+                              " grade pipeline --run-as nobody --lab " + st.lab + " --out " + out);
     CHECK(r.exit_code == 2);
     fw::test::check_mentions(r.output, {"could write the output directory", out});
 }

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -33,9 +34,6 @@ namespace {
 using fw::test::read_text;
 using fw::test::shell_quote;
 using fw::test::write_text;
-
-
-
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -101,22 +99,30 @@ struct Autograder {
 };
 
 std::string environment(const Autograder& ag, const std::string& extra = "") {
-    return "env -u LAB_ROOT -u LAB_SHADER_DIR -u CI AUTOGRADER_ROOT=" + shell_quote(ag.root.string()) +
-           " AUTOGRADER_USER=" + ag.user + " COURSE_SEED=1 " + extra + " ";
+    return "env -u LAB_ROOT -u LAB_SHADER_DIR -u CI AUTOGRADER_ROOT=" +
+           shell_quote(ag.root.string()) + " AUTOGRADER_USER=" + ag.user + " COURSE_SEED=1 " +
+           extra + " ";
 }
 
 std::string set_up(Autograder& ag) {
-    // One folder whichever test case comes first, so that re-runs find their
-    // ccache entries (CCACHE_BASEDIR below).
-    ag.dir = fs::path(fw::test::out_dir()).parent_path() / "gradescope";
+    // One folder per build whichever test case comes first, so that re-runs
+    // find their ccache entries (CCACHE_BASEDIR below). It is outside the
+    // build, in /tmp: like /autograder, every user must be able to enter it,
+    // and a clone may sit below a folder only root can enter.
+    ag.dir = fs::path("/tmp") /
+             ("course-gradescope-" + std::to_string(std::hash<std::string>{}(fw::test::bin_dir())));
+    fs::create_directories(ag.dir);
+    fs::permissions(ag.dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                fs::perms::others_read | fs::perms::others_exec);
     ag.root = ag.dir / "root";
     ag.user = "nobody";
     fs::remove_all(ag.root);
     fs::create_directories(ag.root / "results");
     const fs::path source = ag.root / "source";
     auto start = std::chrono::steady_clock::now();
-    auto r = fw::test::run_command("env -u LAB_ROOT " + shell_quote(fw::test::bin_dir() + "/course") +
-                                   " gradescope --out " + shell_quote(source.string()));
+    auto r =
+        fw::test::run_command("env -u LAB_ROOT " + shell_quote(fw::test::bin_dir() + "/course") +
+                              " gradescope --out " + shell_quote(source.string()));
     MESSAGE("course gradescope (exit " << r.exit_code << "):\n" << r.output);
     if (r.exit_code != 0) return "course gradescope failed";
 
