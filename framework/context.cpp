@@ -18,7 +18,11 @@ namespace fw {
 namespace {
 
 constexpr const char* kBackendVariable = "LAB_BACKEND";
+#ifdef LAB_HAVE_OSMESA
 constexpr const char* kValidBackends = "auto, osmesa, egl";
+#else
+constexpr const char* kValidBackends = "auto, egl (this build has no osmesa)";
+#endif
 
 std::string gl_string(GLenum name) {
     const GLubyte* s = glGetString(name);
@@ -112,6 +116,12 @@ std::unique_ptr<OffscreenContext> create_offscreen_context(Backend backend) {
     } catch (const EnvironmentError& e) {
         egl_reason = e.what();
     }
+    if (!backend_compiled_in(Backend::OSMesa)) {
+        throw EnvironmentError(
+            "no offscreen OpenGL 4.3 core context with --backend auto (tried egl; this build has "
+            "no osmesa).\n  egl: " +
+            egl_reason);
+    }
     try {
         return create_osmesa();
     } catch (const EnvironmentError& e) {
@@ -158,7 +168,8 @@ void load_gl_and_check(GLLoader loader, ContextInfo& info) {
             "the " + info.backend + " backend gave OpenGL " + info.gl_version + " (" + profile +
             ", renderer " + info.gl_renderer +
             "); the labs need 4.3 core: Mesa >= 20 llvmpipe "
-            "provides it; try LIBGL_ALWAYS_SOFTWARE=1 or another --backend (osmesa, egl)" +
+            "provides it; try LIBGL_ALWAYS_SOFTWARE=1 or another --backend (" + kValidBackends +
+            ")" +
             backends::mesa_override_note());
     }
 }

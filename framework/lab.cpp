@@ -47,13 +47,13 @@ bool register_lab(LabInfo info, LabFactory factory) {
 
 const std::vector<RegisteredLab>& registered_labs() { return registry(); }
 
-const RegisteredLab& find_lab(const std::string& id) {
+const RegisteredLab& find_lab(std::string_view id) {
     std::string names;
     for (const RegisteredLab& lab : registry()) {
         if (lab.info.id == id) return lab;
         names += (names.empty() ? "" : ", ") + lab.info.id;
     }
-    throw UsageError("unknown lab '" + id + "'; the labs are: " + (names.empty() ? "(none)" : names));
+    throw UsageError("unknown lab '" + std::string(id) + "'; the labs are: " + (names.empty() ? "(none)" : names));
 }
 
 ParamValues default_params(const RegisteredLab& lab) {

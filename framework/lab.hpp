@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "framework/params.hpp"
@@ -92,8 +93,11 @@ struct RegisteredLab {
 bool register_lab(LabInfo info, LabFactory factory);
 // All labs, sorted by number.
 const std::vector<RegisteredLab>& registered_labs();
-// Throws UsageError listing the valid lab names.
-const RegisteredLab& find_lab(const std::string& id);
+// The registered lab with that id; throws UsageError listing the valid names.
+// The registry owns every lab for the life of the program. The id is taken as
+// a view, not a reference, so that a temporary argument (a literal, a JSON
+// value) cannot look like what the returned reference points into.
+const RegisteredLab& find_lab(std::string_view id);
 // Default values with validation of the declaration itself.
 ParamValues default_params(const RegisteredLab& lab);
 // Path of a file in the lab's folder, e.g. lab_path(info, "checkpoints.json").

@@ -1,7 +1,11 @@
 // `course bless`: re-renders the reference image of every checkpoint with an
 // image check, through the same child as `course grade`, and writes
 // labs/NN_name/reference/CHECKPOINT.png. References are repository files:
-// bless, look at them, commit them.
+// bless, look at them, commit them. The backend follows the same rule as
+// `course grade` (--backend, else $LAB_BACKEND, else auto: EGL, then OSMesa);
+// the two backends render every checkpoint alike (tests/tools/test_backends).
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
 #include <filesystem>
 
@@ -10,6 +14,23 @@
 #include "grading/commands.hpp"
 
 namespace grading {
+
+namespace {
+
+// "egl (surfaceless, llvmpipe (LLVM 15.0.6, 256 bits))": what the child says it
+// rendered on, for the lines that name each written file. Informational only.
+std::string rendered_on(const ChildOutputs& outputs) {
+    std::string bytes, why;
+    if (!outputs.read("child.json", 64 * 1024, bytes, why)) return "backend unknown: " + why;
+    const nlohmann::json child = nlohmann::json::parse(bytes, nullptr, false);
+    if (!child.is_object() || !child.contains("context") || !child["context"].is_object())
+        return "backend unknown";
+    const nlohmann::json& c = child["context"];
+    return c.value("backend", "?") + " (" + c.value("platform", "?") + ", " +
+           c.value("gl_renderer", "?") + ")";
+}
+
+}  // namespace
 
 int bless_command(const BlessOptions& options) {
     const std::vector<LabData> labs = select_labs(discover_labs(source_root()), options.labs);
@@ -44,11 +65,12 @@ int bless_command(const BlessOptions& options) {
             }
         }
         std::filesystem::create_directories(lab.reference_dir());
+        const std::string backend = rendered_on(*child.outputs);
         for (size_t i = 0; i < plan.renders.size(); ++i) {
             const std::string rel = lab.reference(plan.renders[i].checkpoint);
             fw::write_png(lab.root + "/" + rel, images[i]);
             std::printf("wrote %s (%dx%d, %s)\n", rel.c_str(), images[i].width, images[i].height,
-                        options.backend.c_str());
+                        backend.c_str());
         }
     }
     return 0;

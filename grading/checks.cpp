@@ -171,7 +171,7 @@ void validate_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, 
             w.fail("function", "must name a unit function, e.g. \"translate\"");
         const ReferenceUnit* ref = nullptr;
         try {
-            ref = &find_reference(lab.id, w.get("function").get<std::string>());
+            ref = &find_reference(lab.id, w.get("function").get_ref<const std::string&>());
         } catch (const fw::Error& e) {
             w.fail("function", e.what());
         }
@@ -233,7 +233,8 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
         for (size_t i = 0; i < cp.checks.size(); ++i) {
             const json& check = cp.checks[i];
             if (check["kind"] != "unit") continue;
-            const ReferenceUnit& ref = find_reference(lab.id, check["function"]);
+            const ReferenceUnit& ref =
+                find_reference(lab.id, check.at("function").get_ref<const std::string&>());
             UnitPlan unit{cp.name, i, {}};
             // Edge cases first: their failures, shown first, are the easiest to read.
             for (const json& args : check.value("edge", json::array()))

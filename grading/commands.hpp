@@ -27,7 +27,7 @@ int grade_command(const GradeOptions& options);
 struct BlessOptions {
     std::vector<std::string> labs;  // empty: all
     std::string lab_binary;
-    std::string backend = "osmesa";  // references are blessed on OSMesa
+    std::string backend;  // as for grade: empty is $LAB_BACKEND or auto (EGL, then OSMesa)
 };
 int bless_command(const BlessOptions& options);
 

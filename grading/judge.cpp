@@ -259,7 +259,8 @@ void judge_stat(const json& check, Frame& frame, CheckResult& r) {
 
 void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, unsigned seed,
                 const json* units, const std::string& units_why, CheckResult& r) {
-    const ReferenceUnit& ref = find_reference(lab.id, check["function"]);
+    const ReferenceUnit& ref =
+        find_reference(lab.id, check.at("function").get_ref<const std::string&>());
     const double tol = check.value("tolerance", ref.tolerance);
     size_t edges = 0;
     for (const UnitCase& c : plan.cases) edges += c.edge ? 1 : 0;

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     grade->add_option("LAB", g.labs, "Labs to grade (default: all)");
     grade->add_option("--lab", g.lab_binary, "The lab executable to grade (default: beside course)");
     grade->add_option("--out", g.out, "Report directory (default build/grade)");
-    grade->add_option("--backend", g.backend, "auto|osmesa|egl (default $LAB_BACKEND or auto)");
+    const char* backend_help = "auto|osmesa|egl (default $LAB_BACKEND, else auto: EGL, then OSMesa)";
+    grade->add_option("--backend", g.backend, backend_help);
     grade->add_option("--jobs", g.jobs, "Labs graded in parallel")->check(CLI::Range(1, 64));
     grade->add_option("--timeout", g.timeout_seconds, "Seconds per lab (default 60)")
         ->check(CLI::Range(1.0, 3600.0));
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
     auto* bless = app.add_subcommand("bless", "Re-render the reference images from this build");
     bless->add_option("LAB", b.labs, "Labs to bless (default: all)");
     bless->add_option("--lab", b.lab_binary, "The lab executable (default: beside course)");
-    bless->add_option("--backend", b.backend, "Backend to render on (default osmesa)");
+    bless->add_option("--backend", b.backend, backend_help);
 
     std::string release_out;
     auto* release = app.add_subcommand("release", "Write the student version of the repository");

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages the project needs (only those missing), then
-# configures and builds. Idempotent: a second run installs nothing and
-# rebuilds only what changed. Sourced by grade.sh and test.sh; also runs alone.
+# Installs the Debian packages the project needs (Debian 12 or later; only
+# those missing), then configures and builds. Idempotent: a second run installs
+# nothing and rebuilds only what changed. Sourced by grade.sh and test.sh; also runs alone.
 #
 #   LAB_PRESET=asan scripts/setup.sh   # another CMake preset (default: default,
 #                                      # or ci when $CI is set: warnings are errors)

@@ -14,9 +14,11 @@ namespace {
 
 using nlohmann::json;
 
-// Keyed by lab, then function name; a map so that error messages list names in order.
-std::map<std::string, std::map<std::string, ReferenceUnit>>& registry() {
-    static std::map<std::string, std::map<std::string, ReferenceUnit>> all;
+// Keyed by lab, then function name; a map so that error messages list names
+// in order, with transparent comparison so that lookups take string views.
+using ByName = std::map<std::string, ReferenceUnit, std::less<>>;
+std::map<std::string, ByName, std::less<>>& registry() {
+    static std::map<std::string, ByName, std::less<>> all;
     return all;
 }
 
@@ -123,7 +125,7 @@ bool register_reference(ReferenceUnit unit) {
     return true;
 }
 
-const ReferenceUnit& find_reference(const std::string& lab, const std::string& function) {
+const ReferenceUnit& find_reference(std::string_view lab, std::string_view function) {
     auto& all = registry();
     auto l = all.find(lab);
     if (l != all.end()) {
@@ -133,7 +135,8 @@ const ReferenceUnit& find_reference(const std::string& lab, const std::string& f
     std::string names;
     if (l != all.end())
         for (const auto& [name, unit] : l->second) names += (names.empty() ? "" : ", ") + name;
-    throw fw::Error("course has no reference for unit function '" + function + "' of lab '" + lab +
+    throw fw::Error("course has no reference for unit function '" + std::string(function) +
+                    "' of lab '" + std::string(lab) +
                     "'; " + (names.empty() ? "it has none for that lab" : "it has: " + names) +
                     " (references live in grading/units/)");
 }

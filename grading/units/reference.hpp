@@ -15,6 +15,7 @@
 
 #include <random>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "framework/units.hpp"
@@ -41,8 +42,11 @@ struct ReferenceUnit {
 };
 
 bool register_reference(ReferenceUnit unit);
-// Throws fw::Error listing the lab's references when there is none by that name.
-const ReferenceUnit& find_reference(const std::string& lab, const std::string& function);
+// Course's reference for a lab's unit function; throws fw::Error listing the
+// lab's references when there is none by that name. The registry owns every
+// reference for the life of the program; the names are taken as views so that
+// temporary arguments cannot look like what the result points into.
+const ReferenceUnit& find_reference(std::string_view lab, std::string_view function);
 
 // One random argument list for `unit` (a JSON array, one element per argument).
 nlohmann::json random_arguments(const ReferenceUnit& unit, std::mt19937& rng);

@@ -126,9 +126,4 @@ inline bool backend_available(const std::string& backend, std::string& why) {
     return r.exit_code == 0;
 }
 
-inline bool backend_required(const std::string& backend) {
-    const char* req = std::getenv("LAB_REQUIRE_BACKENDS");
-    return req && ("," + std::string(req) + ",").find("," + backend + ",") != std::string::npos;
-}
-
 }  // namespace grade_test

@@ -1,7 +1,7 @@
 // The main() of every test executable. For GL tests it creates the offscreen
 // context named by LAB_BACKEND first; if this machine lacks that backend the
 // test reports SKIP with the reason and exits 77, which CTest shows as
-// skipped, unless LAB_REQUIRE_BACKENDS lists it (CI), when it fails.
+// skipped, unless LAB_REQUIRE_BACKENDS asks for it (CI), when it fails.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
@@ -20,13 +20,6 @@
 
 namespace {
 std::unique_ptr<fw::OffscreenContext> g_context;
-
-bool backend_required(const std::string& name) {
-    const char* req = std::getenv("LAB_REQUIRE_BACKENDS");
-    if (!req) return false;
-    std::string list = std::string(",") + req + ",";
-    return list.find("," + name + ",") != std::string::npos;
-}
 }  // namespace
 
 const fw::ContextInfo& fw::test::context_info() {
@@ -48,7 +41,7 @@ int main(int argc, char** argv) {
                         g_context->info().platform.c_str(), g_context->info().gl_version.c_str(),
                         g_context->info().gl_renderer.c_str());
         } catch (const fw::EnvironmentError& e) {
-            if (backend_required(name)) {
+            if (fw::test::backend_required(name)) {
                 std::printf("FAIL: backend %s is required (LAB_REQUIRE_BACKENDS) but: %s\n",
                             name.c_str(), e.what());
                 return 1;

@@ -22,6 +22,17 @@ namespace fw::test {
 // each GL test once per backend). Only valid in tests built with lab_gl_test.
 const ContextInfo& context_info();
 
+// Whether LAB_REQUIRE_BACKENDS (CI sets it) asks for `backend`: the variable
+// is a comma-separated list of names, or "built" for every backend this build
+// has (egl always, osmesa when CMake found it). A required backend that does
+// not work here fails the test instead of skipping it.
+bool backend_required(const std::string& backend);
+// For a part of a test case that needs `backend`, which does not work here
+// (`why`): fails the test case when the backend is required; otherwise prints
+// "SKIP <what> (backend <backend>): <why>" so that the reason shows in the
+// test's output, and the caller leaves that part out and runs the rest.
+void skip_part_without(const std::string& backend, const std::string& what, const std::string& why);
+
 // Directory for files a test writes (build/test-out/<test name>/), created.
 std::string out_dir();
 // The build's bin directory (where `lab` lives) and the source tree.

@@ -103,19 +103,32 @@ TEST_CASE("unknown backend, on the command line and in LAB_BACKEND, exit 2") {
     auto r = run_lab("render pipeline --backend vulkan -o /dev/null");
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output, "vulkan"));
-    CHECK(contains(r.output, "osmesa"));
-    CHECK(contains(r.output, "egl"));
+    if (fw::backend_compiled_in(fw::Backend::OSMesa)) {
+        CHECK(contains(r.output, "auto, osmesa, egl"));
+    } else {
+        CHECK(contains(r.output, "auto, egl (this build has no osmesa)"));
+    }
     auto e = run_lab("render pipeline -o /dev/null", "LAB_BACKEND=vulkan");
     CHECK(e.exit_code == 2);
     CHECK(contains(e.output, "LAB_BACKEND"));
 }
 
-TEST_CASE("an EGL with no vendor library says what is missing and names osmesa, exit 3") {
-    auto r = run_lab("render pipeline --backend egl -o /dev/null",
-                     "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json");
+TEST_CASE("an EGL with no vendor library says what is missing and what else this build offers, exit 3") {
+    const std::string no_vendor = "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json";
+    auto r = run_lab("render pipeline --backend egl -o /dev/null", no_vendor);
     CHECK(r.exit_code == 3);
     CHECK(contains(r.output, "egl"));
-    CHECK(contains(r.output, "osmesa"));
+    // --backend osmesa is offered exactly when this build has it.
+    CHECK(contains(r.output, "--backend osmesa") == fw::backend_compiled_in(fw::Backend::OSMesa));
+
+    auto a = run_lab("render pipeline --backend auto -o /dev/null", no_vendor);
+    INFO("auto: " << a.output);
+    if (fw::backend_compiled_in(fw::Backend::OSMesa)) {
+        CHECK(a.exit_code == 0);  // falls back to OSMesa
+    } else {
+        CHECK(a.exit_code == 3);
+        CHECK(contains(a.output, "tried egl; this build has no osmesa"));
+    }
 }
 
 TEST_CASE("a missing shader file names its path, exit 1") {

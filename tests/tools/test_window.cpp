@@ -54,15 +54,9 @@ fw::test::CommandResult run_in_xvfb(const std::string& args, const std::string& 
                " run " + args);
 }
 
-// `lab render ARGS -o FILE` on OSMesa where this build has it (like the
-// grader), else on the default backend.
+// `lab render ARGS -o FILE` on the default backend, as the grader renders.
 void render_offscreen(const std::string& args, const std::string& file) {
-#if LAB_HAVE_OSMESA
-    const std::string backend = " --backend osmesa";
-#else
-    const std::string backend;
-#endif
-    REQUIRE(run(lab() + " render " + args + backend + " -o " + file).exit_code == 0);
+    REQUIRE(run(lab() + " render " + args + " -o " + file).exit_code == 0);
 }
 
 fw::CompareResult compare_files(const std::string& actual, const std::string& expected) {
