@@ -77,11 +77,7 @@ bool backend_compiled_in(Backend b, std::string* why_not) {
     (void)why_not;
     return true;
 #else
-    if (why_not) {
-        *why_not =
-            "this build has no OSMesa (libosmesa6-dev was missing when CMake ran; note Mesa 25.1 "
-            "dropped OSMesa); use --backend egl";
-    }
+    if (why_not) *why_not = std::string("this build has no OSMesa (") + LAB_OSMESA_ABSENT + "); use --backend egl";
     return false;
 #endif
 }
