@@ -152,6 +152,33 @@ mounts_under() {
   awk -v t="$1" '$5 == t || index($5, t "/") == 1 { print $5 }' /proc/self/mountinfo
 }
 
+# The tests ctest skipped and the parts of tests that skipped themselves, each
+# with the reason the test printed (SKIP lines in ctest's log).
+skipped() {
+  local summary=$1 log=$2 name
+  local -a names=()
+  mapfile -t names < <(sed -n '/tests did not run/,/^$/p' "$summary" 2>/dev/null |
+    sed -nE 's/^[[:space:]]*[0-9]+ - ([^ ]+) \(Skipped\).*/\1/p')
+  if ((${#names[@]})); then
+    say "  skipped tests:"
+    local reason
+    for name in "${names[@]}"; do
+      reason=$(awk -v t="$name" '
+        $0 ~ "^[0-9]+/[0-9]+ Test: " t "$" { on = 1; next }
+        on && /^SKIP/ { print; exit }
+        on && /^Test time/ { on = 0 }' "$log" 2>/dev/null)
+      say "    $name: ${reason:-(no SKIP line in the ctest log)}"
+    done
+  fi
+  local parts
+  parts=$(grep -E '^SKIP .*\(backend [a-z]+\)' "$log" 2>/dev/null | sort -u)
+  if [ -n "$parts" ]; then
+    say "  parts of tests skipped:"
+    while IFS= read -r line; do say "    $line"; done <<<"$parts"
+  fi
+  if ((${#names[@]} == 0)) && [ -z "$parts" ]; then say "  nothing skipped"; fi
+}
+
 version_of() { awk -v p="$1" '$1 == p { print $2 }' "$2"; }
 
 report() {
@@ -172,16 +199,13 @@ report() {
     fi
     read -r status seconds <"$results/$step.status"
     case $step in
-      grade) summary=$(grep -E '^total|points' "$results/$step.log" | tail -n 1) ;;
+      grade) summary=$(grep -E '^Total:' "$results/$step.log" | tail -n 1) ;;
       test) summary=$(grep -E 'tests passed|tests failed' "$results/$step.log" | tail -n 1) ;;
     esac
     say "  scripts/$step.sh: exit $status in ${seconds} s: ${summary:-no summary line}"
     [ "$status" -eq 0 ] || failed=1
   done
-  if grep -q 'tests did not run' "$results/test.log" 2>/dev/null; then
-    say "  skipped:"
-    sed -n '/tests did not run/,/^$/p' "$results/test.log" | sed '1d; /^$/d; s/^/    /'
-  fi
+  skipped "$results/test.log" "$target/root/gl-labs/build/Testing/Temporary/LastTest.log"
   return "$failed"
 }
 
@@ -218,8 +242,9 @@ repo=$(cd "$(dirname "$0")/.." && pwd)
 git -C "$repo" rev-parse --git-dir >/dev/null 2>&1 || die "$repo is not a git repository"
 if ! command -v debootstrap >/dev/null; then
   say "installing debootstrap"
-  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap >/dev/null ||
+  if ! { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap >/dev/null; }; then
     die "could not install debootstrap (apt-get install debootstrap)"
+  fi
 fi
 
 parent=${FRESH_DEBIAN_DIR:-/var/tmp}
@@ -243,7 +268,7 @@ cleanup() {
   left=$(mounts_under "$target")
   if [ -n "$left" ]; then
     say "still mounted under $target, so it is not removed:" >&2
-    printf '  %s\n' $left >&2
+    printf '  %s\n' "$left" >&2
     exit 2
   fi
   say "nothing is mounted under $target"
