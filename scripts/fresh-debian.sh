@@ -14,6 +14,7 @@
 #   FRESH_DEBIAN_DIR     where the system is made (default /var/tmp)
 #   FRESH_DEBIAN_CACHE   a folder kept between runs for downloaded .deb files
 #                        (default: none, everything is downloaded)
+#   FRESH_DEBIAN_UNSHARE 0: mount in this namespace even where unshare works
 #   CI, LAB_REQUIRE_BACKENDS  passed into the system when set (CI=true makes
 #                        warnings errors there too; LAB_REQUIRE_BACKENDS=built
 #                        fails a test that skips a backend the build has)
@@ -141,8 +142,11 @@ unmount_under() {
   for pid in /proc/[0-9]*; do
     [ "$(readlink "$pid/root" 2>/dev/null)" = "$target" ] && kill -KILL "${pid#/proc/}" 2>/dev/null
   done
+  # Deepest first; a point listed twice (stacked mounts) or unmounted by
+  # another unmount_under meanwhile is no failure.
   for m in $(mounts_under "$target" | sort -r); do
-    umount "$m" 2>/dev/null || umount -l "$m" 2>/dev/null || say "could not unmount $m"
+    umount "$m" 2>/dev/null || umount -l "$m" 2>/dev/null ||
+      ! mounts_under "$target" | grep -qxF "$m" || say "could not unmount $m"
   done
   return 0
 }
@@ -234,7 +238,7 @@ esac
 
 if [ "$(id -u)" -ne 0 ]; then
   command -v sudo >/dev/null || die "needs root for debootstrap, chroot and mounts; run it as root"
-  exec sudo --preserve-env=FRESH_DEBIAN_MIRROR,FRESH_DEBIAN_DIR,FRESH_DEBIAN_CACHE,CI,LAB_REQUIRE_BACKENDS \
+  exec sudo --preserve-env=FRESH_DEBIAN_MIRROR,FRESH_DEBIAN_DIR,FRESH_DEBIAN_CACHE,FRESH_DEBIAN_UNSHARE,CI,LAB_REQUIRE_BACKENDS \
     bash "$0" "$@"
 fi
 
@@ -260,7 +264,16 @@ cleanup() {
   local rc=$?
   trap - EXIT INT TERM
   if [ -n "$child" ] && kill -0 "$child" 2>/dev/null; then
+    # Under unshare the run is the namespace's first process (unshare itself
+    # ignores SIGINT and SIGTERM while it waits): killing it ends every process
+    # in the namespace and with them its mounts. Without unshare the run gets
+    # SIGTERM, and what still runs in the system is killed below.
+    local init
+    for init in $(cat /proc/"$child"/task/*/children 2>/dev/null); do
+      kill -KILL "$init" 2>/dev/null || true
+    done
     kill -TERM "$child" 2>/dev/null || true
+    unmount_under "$target"
     wait "$child" 2>/dev/null || true
   fi
   unmount_under "$target"
@@ -285,7 +298,10 @@ trap 'exit 143' TERM
 
 # A private mount and PID namespace: the mounts and every process in the
 # system end with the run, however it ends.
-if unshare --mount --propagation private --pid --fork true 2>/dev/null; then
+if [ "${FRESH_DEBIAN_UNSHARE:-1}" = 0 ]; then
+  say "FRESH_DEBIAN_UNSHARE=0: mounting in this namespace, unmounted by the trap"
+  runner=(bash "$0" --inside)
+elif unshare --mount --propagation private --pid --fork true 2>/dev/null; then
   runner=(unshare --mount --propagation private --pid --fork bash "$0" --inside)
 else
   say "no mount namespace here (unshare failed): mounting in this namespace, unmounted by the trap"
