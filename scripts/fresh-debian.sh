@@ -133,6 +133,7 @@ inside() {
   in_root dpkg-query -W -f='${Package} ${Version}\n' libegl-mesa0 libosmesa6-dev g++ cmake \
     libimgui-dev libglfw3-dev 2>/dev/null >"$results/versions" || true
   in_root cat /etc/debian_version >"$results/debian_version" 2>/dev/null || true
+  in_root g++ -dumpfullversion >"$results/gcc_version" 2>/dev/null || true
 }
 
 # Unmounts everything at or below $1 (deepest first) after stopping what still
@@ -190,7 +191,7 @@ report() {
   local v=$results/versions
   echo
   say "$suite (Debian $(cat "$results/debian_version" 2>/dev/null || echo '?'))"
-  say "  Mesa $(version_of libegl-mesa0 "$v"), GCC $(version_of g++ "$v"), CMake $(version_of cmake "$v"), imgui $(version_of libimgui-dev "$v"), GLFW $(version_of libglfw3-dev "$v")"
+  say "  Mesa $(version_of libegl-mesa0 "$v"), GCC $(cat "$results/gcc_version" 2>/dev/null) (g++ $(version_of g++ "$v")), CMake $(version_of cmake "$v"), imgui $(version_of libimgui-dev "$v"), GLFW $(version_of libglfw3-dev "$v")"
   local osmesa
   osmesa=$(version_of libosmesa6-dev "$v")
   say "  OSMesa: ${osmesa:-not installed (not in $suite)}"
