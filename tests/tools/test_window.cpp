@@ -47,10 +47,13 @@ void require_window_support() {
 }
 
 // `lab run ARGS` on a fresh virtual display (-a: a free display number, so
-// tests may run in parallel), in directory `dir` (F12 saves there).
+// tests may run in parallel), in directory `dir` (F12 saves there). The server
+// listens only on its socket file under /tmp (-nolisten local: no abstract
+// socket, which every chroot and container on the machine would share), so a
+// suite in a chroot (scripts/fresh-debian.sh) never meets the host's displays.
 fw::test::CommandResult run_in_xvfb(const std::string& args, const std::string& dir = ".",
                                     const std::string& env = "") {
-    return run("cd " + dir + " && " + env + " xvfb-run -a -s '-screen 0 1024x768x24' " + lab() +
+    return run("cd " + dir + " && " + env + " xvfb-run -a -s '-screen 0 1024x768x24 -nolisten local' " + lab() +
                " run " + args);
 }
 
