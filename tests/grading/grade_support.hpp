@@ -118,12 +118,23 @@ inline double points(const json& checks) {
 }
 
 // Whether `lab` can render on `backend` here; `why` gets the reason if not.
+// (usable_backend below is what a test case normally wants.)
 inline bool backend_available(const std::string& backend, std::string& why) {
     const std::string png = fw::test::out_dir() + "/probe_" + backend + ".png";
     fw::test::CommandResult r = fw::test::run_command(
         fw::test::bin_dir() + "/lab render pipeline --backend " + backend + " -o " + png);
     why = r.output;
     return r.exit_code == 0;
+}
+
+// For the part of a test case that `what` names and that needs `backend`:
+// true when it renders here, else the part is skipped with the reason (or
+// fails, when LAB_REQUIRE_BACKENDS asks for the backend).
+inline bool usable_backend(const std::string& backend, const std::string& what) {
+    std::string why;
+    if (backend_available(backend, why)) return true;
+    fw::test::skip_part_without(backend, what, why);
+    return false;
 }
 
 }  // namespace grade_test

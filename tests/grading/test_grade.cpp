@@ -25,11 +25,7 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
     int graded = 0;
     for (const std::string backend : {"osmesa", "egl"}) {
         CAPTURE(backend);
-        std::string why;
-        if (!backend_available(backend, why)) {
-            fw::test::skip_part_without(backend, "grading lab 0 on " + backend, why);
-            continue;
-        }
+        if (!usable_backend(backend, "grading lab 0 on " + backend)) continue;
         ++graded;
         const std::string out = fw::test::out_dir() + "/" + backend;
         Graded g = grade("", "pipeline --backend " + backend, out);
@@ -183,11 +179,7 @@ TEST_CASE("course bless writes the references that course grade then accepts, on
           std::string::npos);
     for (const std::string backend : {"egl", "osmesa"}) {
         CAPTURE(backend);
-        std::string why;
-        if (!backend_available(backend, why)) {
-            fw::test::skip_part_without(backend, "grading EGL's references on " + backend, why);
-            continue;
-        }
+        if (!usable_backend(backend, "grading EGL's references on " + backend)) continue;
         Graded g = grade("LAB_ROOT=" + tree, "pipeline --backend " + backend,
                          fw::test::out_dir() + "/report-" + backend);
         CHECK(g.exit_code == 0);
@@ -217,9 +209,7 @@ TEST_CASE("course bless: --backend and LAB_BACKEND choose, and a build without O
         // What this build offers instead, and nothing half-written.
         CHECK(r.exit_code == 2);
         fw::test::check_mentions(r.output, {"no OSMesa", "--backend egl", "nothing written"});
-    } else if (!backend_available("osmesa", why)) {
-        fw::test::skip_part_without("osmesa", "blessing with --backend osmesa", why);
-    } else {
+    } else if (usable_backend("osmesa", "blessing with --backend osmesa")) {
         CHECK(r.exit_code == 0);
         CHECK(r.output.find(wrote + "osmesa (") != std::string::npos);
     }
