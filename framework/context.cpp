@@ -77,7 +77,9 @@ bool backend_compiled_in(Backend b, std::string* why_not) {
     (void)why_not;
     return true;
 #else
-    if (why_not) *why_not = std::string("this build has no OSMesa (") + LAB_OSMESA_ABSENT + "); use --backend egl";
+    if (why_not)
+        *why_not =
+            std::string("this build has no OSMesa (") + LAB_OSMESA_ABSENT + "); use --backend egl";
     return false;
 #endif
 }
@@ -160,13 +162,11 @@ void load_gl_and_check(GLLoader loader, ContextInfo& info) {
     }
     const bool new_enough = major > 4 || (major == 4 && minor >= 3);
     if (!new_enough || !core) {
-        throw EnvironmentError(
-            "the " + info.backend + " backend gave OpenGL " + info.gl_version + " (" + profile +
-            ", renderer " + info.gl_renderer +
-            "); the labs need 4.3 core: Mesa >= 20 llvmpipe "
-            "provides it; try LIBGL_ALWAYS_SOFTWARE=1 or another --backend (" + kValidBackends +
-            ")" +
-            backends::mesa_override_note());
+        throw EnvironmentError("the " + info.backend + " backend gave OpenGL " + info.gl_version +
+                               " (" + profile + ", renderer " + info.gl_renderer +
+                               "); the labs need 4.3 core: Mesa >= 20 llvmpipe "
+                               "provides it; try LIBGL_ALWAYS_SOFTWARE=1 or another --backend (" +
+                               kValidBackends + ")" + backends::mesa_override_note());
     }
 }
 

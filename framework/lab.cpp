@@ -53,7 +53,8 @@ const RegisteredLab& find_lab(std::string_view id) {
         if (lab.info.id == id) return lab;
         names += (names.empty() ? "" : ", ") + lab.info.id;
     }
-    throw UsageError("unknown lab '" + std::string(id) + "'; the labs are: " + (names.empty() ? "(none)" : names));
+    throw UsageError("unknown lab '" + std::string(id) +
+                     "'; the labs are: " + (names.empty() ? "(none)" : names));
 }
 
 ParamValues default_params(const RegisteredLab& lab) {

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     grade->add_option("LAB", g.labs, "Labs to grade (default: all)");
     grade->add_option("--lab", g.lab_binary, "The lab executable to grade (default: beside course)");
     grade->add_option("--out", g.out, "Report directory (default build/grade)");
-    const char* backend_help = "auto|osmesa|egl (default $LAB_BACKEND, else auto: EGL, then OSMesa)";
+    const char* backend_help =
+        "auto|osmesa|egl (default $LAB_BACKEND, else auto: EGL, then OSMesa)";
     grade->add_option("--backend", g.backend, backend_help);
     grade->add_option("--jobs", g.jobs, "Labs graded in parallel")->check(CLI::Range(1, 64));
     grade->add_option("--timeout", g.timeout_seconds, "Seconds per lab (default 60)")

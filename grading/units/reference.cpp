@@ -136,8 +136,8 @@ const ReferenceUnit& find_reference(std::string_view lab, std::string_view funct
     if (l != all.end())
         for (const auto& [name, unit] : l->second) names += (names.empty() ? "" : ", ") + name;
     throw fw::Error("course has no reference for unit function '" + std::string(function) +
-                    "' of lab '" + std::string(lab) +
-                    "'; " + (names.empty() ? "it has none for that lab" : "it has: " + names) +
+                    "' of lab '" + std::string(lab) + "'; " +
+                    (names.empty() ? "it has none for that lab" : "it has: " + names) +
                     " (references live in grading/units/)");
 }
 

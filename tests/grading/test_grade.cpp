@@ -165,8 +165,8 @@ TEST_CASE("course bless writes the references that course grade then accepts, on
     // accept them as they are.
     const std::string tree = make_tree(fw::test::out_dir() + "/tree", false);
     fs::remove_all(tree + "/labs/00_pipeline/reference");
-    fw::test::CommandResult r =
-        fw::test::run_command("env -u LAB_BACKEND LAB_ROOT=" + tree + " " + course() + " bless pipeline");
+    fw::test::CommandResult r = fw::test::run_command("env -u LAB_BACKEND LAB_ROOT=" + tree + " " +
+                                                      course() + " bless pipeline");
     MESSAGE(r.output);
     CHECK(r.exit_code == 0);
     int images = 0;

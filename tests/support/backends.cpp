@@ -20,7 +20,8 @@ bool backend_required(const std::string& backend) {
     }
 }
 
-void skip_part_without(const std::string& backend, const std::string& what, const std::string& why) {
+void skip_part_without(const std::string& backend, const std::string& what,
+                       const std::string& why) {
     if (backend_required(backend)) {
         FAIL_CHECK("backend " << backend << " is required (LAB_REQUIRE_BACKENDS="
                               << std::getenv("LAB_REQUIRE_BACKENDS") << ") but: " << why);

@@ -54,7 +54,8 @@ TEST_CASE("osmesa and egl agree on every checkpoint") {
         // bytes, which is why a reference may be blessed on either backend;
         // different renderers (a GPU behind EGL) need only pass the image check.
         const std::string stem = rel.substr(0, rel.size() - 4);
-        const auto stats_a = nlohmann::json::parse(std::ifstream(out + "/osmesa/" + stem + ".json"));
+        const auto stats_a =
+            nlohmann::json::parse(std::ifstream(out + "/osmesa/" + stem + ".json"));
         const auto stats_b = nlohmann::json::parse(std::ifstream(out + "/egl/" + stem + ".json"));
         const bool same_renderer = stats_a["gl_renderer"] == stats_b["gl_renderer"];
         if (same_renderer) {

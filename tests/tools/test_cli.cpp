@@ -113,7 +113,8 @@ TEST_CASE("unknown backend, on the command line and in LAB_BACKEND, exit 2") {
     CHECK(contains(e.output, "LAB_BACKEND"));
 }
 
-TEST_CASE("an EGL with no vendor library says what is missing and what else this build offers, exit 3") {
+TEST_CASE(
+    "an EGL with no vendor library says what is missing and what else this build offers, exit 3") {
     const std::string no_vendor = "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json";
     auto r = run_lab("render pipeline --backend egl -o /dev/null", no_vendor);
     CHECK(r.exit_code == 3);

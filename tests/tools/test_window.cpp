@@ -53,8 +53,8 @@ void require_window_support() {
 // suite in a chroot (scripts/fresh-debian.sh) never meets the host's displays.
 fw::test::CommandResult run_in_xvfb(const std::string& args, const std::string& dir = ".",
                                     const std::string& env = "") {
-    return run("cd " + dir + " && " + env + " xvfb-run -a -s '-screen 0 1024x768x24 -nolisten local' " + lab() +
-               " run " + args);
+    return run("cd " + dir + " && " + env +
+               " xvfb-run -a -s '-screen 0 1024x768x24 -nolisten local' " + lab() + " run " + args);
 }
 
 // `lab render ARGS -o FILE` on the default backend, as the grader renders.
