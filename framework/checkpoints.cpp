@@ -1,16 +1,45 @@
 #include "framework/checkpoints.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
 std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab) {
     return load_checkpoints(lab, lab_path(lab.info, "checkpoints.json"));
 }
+
+namespace {
+
+// The lab a checkpoints file belongs to: the id of its folder's name
+// (labs/02_robot_arm/checkpoints.json: "robot-arm"). An optional "lab" field
+// must agree; a file outside a lab folder must have one.
+template <class Fail>
+std::string lab_of_checkpoint_file(const std::string& path, const nlohmann::json& doc, Fail fail) {
+    if (doc.contains("lab") && !doc["lab"].is_string())
+        fail("\"lab\" must be a string: the lab's id");
+    const std::string named = doc.value("lab", std::string());
+    const std::string folder = std::filesystem::path(path).parent_path().filename().string();
+    int number = 0;
+    std::string id;
+    try {
+        parse_lab_dir(folder, number, id);
+    } catch (const Error&) {
+        if (named.empty()) fail("the file is not in a lab folder (labs/NN_name/) and has no \"lab\"");
+        return named;
+    }
+    if (!named.empty() && named != id)
+        fail("\"lab\" is \"" + named + "\" but the file is in folder " + folder + ", lab '" + id +
+             "'; the folder's name decides: remove \"lab\"");
+    return id;
+}
+
+}  // namespace
 
 CheckpointFile read_checkpoint_file(const std::string& path) {
     std::ifstream in(path);
@@ -24,12 +53,9 @@ CheckpointFile read_checkpoint_file(const std::string& path) {
     auto fail = [&](const std::string& what) { throw Error(path + ": " + what); };
     if (!doc.is_object() || !doc.contains("checkpoints") || !doc["checkpoints"].is_array())
         fail("expected an object with a \"checkpoints\" array");
-    if (!doc.contains("lab") || !doc["lab"].is_string())
-        fail("expected \"lab\": the lab's name, e.g. \"pipeline\"");
-
     CheckpointFile file;
     file.path = path;
-    file.lab = doc["lab"].get<std::string>();
+    file.lab = lab_of_checkpoint_file(path, doc, fail);
     std::set<std::string> names;
     for (const auto& item : doc["checkpoints"]) {
         Checkpoint cp;
@@ -82,11 +108,9 @@ std::vector<Checkpoint> load_checkpoints(const RegisteredLab& lab, const std::st
 
 const Checkpoint& find_checkpoint(const std::vector<Checkpoint>& all, const std::string& name,
                                   const std::string& lab_id) {
-    std::string names;
-    for (const Checkpoint& cp : all) {
+    for (const Checkpoint& cp : all)
         if (cp.name == name) return cp;
-        names += (names.empty() ? "" : ", ") + cp.name;
-    }
+    const std::string names = join(all, ", ", &Checkpoint::name);
     throw UsageError("lab '" + lab_id + "' has no checkpoint '" + name + "'; its checkpoints are: " +
                      (names.empty() ? "(none)" : names));
 }

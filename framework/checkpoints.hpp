@@ -1,9 +1,10 @@
 // Checkpoints: named parameter sets with points and checks, read from the
 // data file beside the lab (labs/NN_name/checkpoints.json; JSON with //
 // comments allowed). `lab` only reads names and parameters; `course` alone
-// reads the checks and decides pass or fail.
+// reads the checks and decides pass or fail. The lab is the one of the
+// file's folder.
 //
-//   {"lab": "pipeline", "checkpoints": [
+//   {"checkpoints": [
 //     {"name": "order_depth", "visibility": "visible",
 //      "params": {"scene": "order", "depth_test": true},
 //      "checks": [{"kind": "image", "points": 2},
@@ -30,7 +31,7 @@ struct Checkpoint {
 
 struct CheckpointFile {
     std::string path;
-    std::string lab;  // "lab": the lab's name
+    std::string lab;  // the lab's id, from the folder's name
     std::vector<Checkpoint> checkpoints;
 };
 

@@ -5,15 +5,21 @@
 #include <set>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "framework/gl/program.hpp"
 
 namespace fw {
 
-ProgramLibrary::ProgramLibrary() = default;
+ProgramLibrary::ProgramLibrary(std::string folder) : folder_(std::move(folder)) {}
 ProgramLibrary::~ProgramLibrary() = default;
 
 Program& ProgramLibrary::load(const std::vector<std::string>& files) {
-    programs_.push_back(std::make_unique<Program>(Program::from_files(files)));
+    std::vector<std::string> paths;
+    for (const std::string& file : files)
+        paths.push_back(folder_.empty() || file.find('/') != std::string::npos
+                            ? file
+                            : folder_ + "/" + file);
+    programs_.push_back(std::make_unique<Program>(Program::from_files(paths)));
     return *programs_.back();
 }
 
@@ -37,8 +43,31 @@ std::vector<RegisteredLab>& registry() {
 }
 }  // namespace
 
-bool register_lab(LabInfo info, LabFactory factory) {
+void parse_lab_dir(std::string_view dir, int& number, std::string& id) {
+    const bool ok = dir.size() > 3 && std::isdigit(static_cast<unsigned char>(dir[0])) &&
+                    std::isdigit(static_cast<unsigned char>(dir[1])) && dir[2] == '_';
+    if (!ok)
+        throw Error("lab folder '" + std::string(dir) +
+                    "': a lab's folder is named NN_name, e.g. 02_robot_arm");
+    number = (dir[0] - '0') * 10 + (dir[1] - '0');
+    id = std::string(dir.substr(3));
+    for (char& c : id) {
+        if (c == '_') c = '-';
+        if (!std::islower(static_cast<unsigned char>(c)) && c != '-' &&
+            !std::isdigit(static_cast<unsigned char>(c)))
+            throw Error("lab folder '" + std::string(dir) +
+                        "': the name after NN_ may hold only a-z, 0-9 and '_'");
+    }
+}
+
+bool register_lab(std::string_view dir, LabInfo info, LabFactory factory) {
+    parse_lab_dir(dir, info.number, info.id);
+    info.dir = std::string(dir);
     auto& labs = registry();
+    for (const RegisteredLab& other : labs)
+        if (other.info.number == info.number || other.info.id == info.id)
+            throw Error("lab folder '" + info.dir + "': lab " + other.info.dir +
+                        " has the same number or id; each lab needs its own");
     labs.push_back({std::move(info), std::move(factory)});
     std::sort(labs.begin(), labs.end(),
               [](const RegisteredLab& a, const RegisteredLab& b) { return a.info.number < b.info.number; });
@@ -48,13 +77,22 @@ bool register_lab(LabInfo info, LabFactory factory) {
 const std::vector<RegisteredLab>& registered_labs() { return registry(); }
 
 const RegisteredLab& find_lab(std::string_view id) {
-    std::string names;
-    for (const RegisteredLab& lab : registry()) {
+    for (const RegisteredLab& lab : registry())
         if (lab.info.id == id) return lab;
-        names += (names.empty() ? "" : ", ") + lab.info.id;
-    }
+    const std::string names = join(registry(), ", ", [](const RegisteredLab& lab) {
+        return lab.info.id;
+    });
     throw UsageError("unknown lab '" + std::string(id) +
                      "'; the labs are: " + (names.empty() ? "(none)" : names));
+}
+
+const RegisteredLab& find_lab_in_folder(std::string_view dir) {
+    for (const RegisteredLab& lab : registry())
+        if (lab.info.dir == dir) return lab;
+    int number = 0;
+    std::string id;
+    parse_lab_dir(dir, number, id);
+    return find_lab(id);  // throws, listing the labs
 }
 
 ParamValues default_params(const RegisteredLab& lab) {

@@ -3,6 +3,11 @@
 //
 //   FW_LAB(PipelineLab)   // at the end of labs/00_pipeline/pipeline.cpp
 //
+// The lab's number, id and folder come from its folder's name, which the
+// build passes to every file of the lab as FW_LAB_DIR: labs/02_robot_arm/
+// is lab number 2, id `robot-arm` (underscores become hyphens), with its
+// shaders in shaders/02_robot_arm/.
+//
 // The framework's runner owns main(), the context or window, the command line
 // and the framebuffer; a lab only creates its GL objects and draws a frame.
 #pragma once
@@ -22,8 +27,10 @@ namespace fw {
 
 class Program;
 
-// A lab's description: `id` is what users type (`lab render pipeline`),
-// `dir` its folder under labs/ and shaders/ (e.g. "00_pipeline").
+// A lab's description. The lab fills in its title, parameters, controls and
+// functions; registration fills in number, id and dir from the folder name:
+// `id` is what users type (`lab render pipeline`), `dir` the folder under
+// labs/ and shaders/ (e.g. "00_pipeline").
 struct LabInfo {
     int number = 0;
     std::string id;
@@ -39,12 +46,16 @@ struct LabInfo {
 // to compile keeps its last good version and the error is shown.
 class ProgramLibrary {
 public:
-    ProgramLibrary();
+    // `folder`: the lab's folder under shaders/ (its LabInfo::dir), where
+    // load() looks for file names without a '/'; empty: shaders/ itself.
+    explicit ProgramLibrary(std::string folder = {});
     ~ProgramLibrary();
     ProgramLibrary(const ProgramLibrary&) = delete;
     ProgramLibrary& operator=(const ProgramLibrary&) = delete;
 
-    // Compiles and links now; throws fw::Error with file, stage, line and
+    // Compiles and links now: load({"pipeline.vert", "pipeline.frag"}). A name
+    // without '/' is in the lab's folder; one with '/' is relative to
+    // shaders/ (or absolute). Throws fw::Error with file, stage, line and
     // source on failure. The reference stays valid for the library's life.
     Program& load(const std::vector<std::string>& files);
     // Recompiles every program. Returns one message per program that failed
@@ -52,6 +63,7 @@ public:
     std::vector<std::string> reload_all();
 
 private:
+    std::string folder_;
     std::vector<std::unique_ptr<Program>> programs_;
 };
 
@@ -71,16 +83,19 @@ public:
     // Draws one frame into the bound framebuffer. The runner has set the
     // viewport to the frame and cleared colour to (0, 0, 0, 1) and depth to 1.
     virtual void draw(const ParamValues& params, const Frame& frame) = 0;
-    // Extra figures for --stats (under "lab_stats"), e.g. bytes stored.
-    virtual nlohmann::json stats(const ParamValues&) const { return nlohmann::json::object(); }
+    // Extra figures for --stats (under "lab_stats"), e.g. bytes stored, for
+    // the frame just drawn with these parameters.
+    virtual nlohmann::json stats(const ParamValues&, const Frame&) const {
+        return nlohmann::json::object();
+    }
     // Checks that involve several parameters (e.g. far > near); returns an
     // error message naming them, or empty when the values are consistent.
     virtual std::string validate(const ParamValues&) const { return {}; }
-    // Window only: mouse drag in pixels (dy > 0 when the mouse moves up, as
-    // GL's y) and scroll steps, for controls such as an orbit camera. May
-    // change parameters; return true if it did.
-    virtual bool on_drag(ParamValues&, double /*dx*/, double /*dy*/) { return false; }
-    virtual bool on_scroll(ParamValues&, double /*steps*/) { return false; }
+    // Window only: mouse drag in pixels of `frame` (dy > 0 when the mouse
+    // moves up, as GL's y) and scroll steps, for controls such as an orbit
+    // camera. May change parameters; return true if it did.
+    virtual bool on_drag(ParamValues&, const Frame&, double /*dx*/, double /*dy*/) { return false; }
+    virtual bool on_scroll(ParamValues&, const Frame&, double /*steps*/) { return false; }
 };
 
 using LabFactory = std::function<std::unique_ptr<Lab>()>;
@@ -90,7 +105,12 @@ struct RegisteredLab {
     LabFactory create;
 };
 
-bool register_lab(LabInfo info, LabFactory factory);
+// Registers a lab from the folder `dir` ("02_robot_arm"): fills in info's
+// number, id and dir, and checks the declaration. FW_LAB calls it.
+bool register_lab(std::string_view dir, LabInfo info, LabFactory factory);
+// "02_robot_arm" -> number 2, id "robot-arm"; throws fw::Error for a name
+// that is not NN_name.
+void parse_lab_dir(std::string_view dir, int& number, std::string& id);
 // All labs, sorted by number.
 const std::vector<RegisteredLab>& registered_labs();
 // The registered lab with that id; throws UsageError listing the valid names.
@@ -98,6 +118,8 @@ const std::vector<RegisteredLab>& registered_labs();
 // a view, not a reference, so that a temporary argument (a literal, a JSON
 // value) cannot look like what the returned reference points into.
 const RegisteredLab& find_lab(std::string_view id);
+// The registered lab of folder `dir` ("00_pipeline"); throws like find_lab.
+const RegisteredLab& find_lab_in_folder(std::string_view dir);
 // Default values with validation of the declaration itself.
 ParamValues default_params(const RegisteredLab& lab);
 // Path of a file in the lab's folder, e.g. lab_path(info, "checkpoints.json").
@@ -105,9 +127,17 @@ std::string lab_path(const LabInfo& info, const std::string& file);
 
 }  // namespace fw
 
-// Registers `Class`, which must have `static fw::LabInfo info();`.
-#define FW_LAB(Class)                                               \
-    namespace {                                                     \
-    const bool fw_lab_registered_##Class = ::fw::register_lab(      \
-        Class::info(), [] { return std::make_unique<Class>(); });   \
+#ifndef FW_LAB_DIR
+#define FW_LAB_DIR ""  // only labs/NN_name/*.cpp get the folder; FW_LAB checks it
+#endif
+
+// Registers `Class`, which must have `static fw::LabInfo info();`, as the lab
+// of the folder this file is in.
+#define FW_LAB(Class)                                                        \
+    namespace {                                                              \
+    static_assert(sizeof(FW_LAB_DIR) > 1,                                    \
+                  "FW_LAB is only for files in labs/NN_name/: the build "    \
+                  "passes their folder's name as FW_LAB_DIR");               \
+    const bool fw_lab_registered_##Class = ::fw::register_lab(               \
+        FW_LAB_DIR, Class::info(), [] { return std::make_unique<Class>(); }); \
     }

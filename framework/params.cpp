@@ -1,11 +1,15 @@
 #include "framework/params.hpp"
 
+#include <cxxabi.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
@@ -17,9 +21,12 @@ std::string format_number(double v) {
     return buf;
 }
 
-std::string join(const std::vector<std::string>& items) {
-    std::string out;
-    for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
+// "pipeline::Scene" for a type's name, as the compiler spells it.
+std::string type_name(std::type_index type) {
+    int status = 0;
+    char* name = abi::__cxa_demangle(type.name(), nullptr, nullptr, &status);
+    std::string out = status == 0 && name ? name : type.name();
+    std::free(name);
     return out;
 }
 
@@ -68,17 +75,32 @@ Param Param::boolean(std::string name, bool def) {
     return p;
 }
 
-Param Param::choice(std::string name, std::vector<std::string> choices, const std::string& def) {
+Param Param::make_choice(std::string name, std::vector<std::string> names,
+                         std::vector<long long> values, long long def, std::type_index type) {
     Param p;
     p.name = std::move(name);
     p.type = ParamType::Enum;
-    p.choices = std::move(choices);
+    p.choice_enum = type;
+    const std::string where = "parameter '" + p.name + "'";
+    if (names.empty()) throw Error(where + ": a choice needs at least one value");
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (names[i].empty()) throw Error(where + ": choice " + std::to_string(i) + " has no name");
+        for (std::size_t j = 0; j < i; ++j) {
+            if (names[j] == names[i])
+                throw Error(where + ": the name '" + names[i] + "' is given twice");
+            if (values[j] == values[i])
+                throw Error(where + ": '" + names[j] + "' and '" + names[i] +
+                            "' are the same enum value");
+        }
+    }
+    p.choices = std::move(names);
+    p.choice_values = std::move(values);
     p.default_choice = -1;
-    for (size_t i = 0; i < p.choices.size(); ++i)
-        if (p.choices[i] == def) p.default_choice = static_cast<int>(i);
+    for (std::size_t i = 0; i < p.choice_values.size(); ++i)
+        if (p.choice_values[i] == def) p.default_choice = static_cast<int>(i);
     if (p.default_choice < 0)
-        throw Error("parameter '" + p.name + "': default '" + def + "' is not one of its choices {" +
-                    join(p.choices) + "}");
+        throw Error(where + ": the default (enum value " + std::to_string(def) +
+                    ") is not one of its choices {" + join(p.choices, ", ") + "}");
     return p;
 }
 
@@ -130,7 +152,7 @@ std::string Param::range_text() const {
             return unit_text.empty() ? r : r + " " + unit_text;
         }
         case ParamType::Bool: return "true|false";
-        case ParamType::Enum: return "{" + join(choices) + "}";
+        case ParamType::Enum: return "{" + join(choices, ", ") + "}";
         case ParamType::Color: return "hex rrggbb";
     }
     return {};
@@ -172,7 +194,7 @@ size_t ParamValues::index_of(const std::string& name) const {
         names.push_back((*params_)[i].name);
     }
     throw UsageError("lab '" + lab_ + "' has no parameter '" + name + "'; its parameters are: " +
-                     (names.empty() ? std::string("(none)") : join(names)));
+                     (names.empty() ? std::string("(none)") : join(names, ", ")));
 }
 
 size_t ParamValues::index_of(const std::string& name, ParamType want) const {
@@ -216,7 +238,7 @@ void ParamValues::set(const std::string& name, const std::string& text) {
                     v.choice = static_cast<int>(c);
                     return;
                 }
-            throw UsageError(where + ": unknown value '" + text + "'; valid values: " + join(p.choices));
+            throw UsageError(where + ": unknown value '" + text + "'; valid values: " + join(p.choices, ", "));
         }
         case ParamType::Color:
             if (!parse_hex_color(text, v.color))
@@ -249,12 +271,22 @@ int ParamValues::integer(const std::string& name) const {
 bool ParamValues::flag(const std::string& name) const {
     return values_[index_of(name, ParamType::Bool)].flag;
 }
-const std::string& ParamValues::choice(const std::string& name) const {
-    size_t i = index_of(name, ParamType::Enum);
-    return (*params_)[i].choices[static_cast<size_t>(values_[i].choice)];
+long long ParamValues::choice_value(const std::string& name, std::type_index type) const {
+    const size_t i = index_of(name, ParamType::Enum);
+    const Param& p = (*params_)[i];
+    if (p.choice_enum != type)
+        throw Error("lab '" + lab_ + "': parameter '" + name + "' is a choice of " +
+                    type_name(p.choice_enum) + ", read as " + type_name(type) +
+                    "; read it with get<" + type_name(p.choice_enum) + ">");
+    return p.choice_values[static_cast<size_t>(values_[i].choice)];
 }
-int ParamValues::choice_index(const std::string& name) const {
-    return values_[index_of(name, ParamType::Enum)].choice;
+double ParamValues::set_clamped(const std::string& name, double value) {
+    const size_t i = index_of(name, ParamType::Float);
+    const Param& p = (*params_)[i];
+    double v = std::clamp(value, p.min, p.max);
+    if (p.type == ParamType::Int) v = std::round(v);
+    values_[i].number = v;
+    return v;
 }
 glm::vec3 ParamValues::color(const std::string& name) const {
     return values_[index_of(name, ParamType::Color)].color;

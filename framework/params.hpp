@@ -2,18 +2,39 @@
 // the window's panel and keyboard shortcuts, the checkpoints, `lab list` and
 // the stats all read this one declaration.
 //
-//   fw::Param::choice("scene", {"order", "indexed"}, "order").help("which scene").key('S'),
+//   enum class Scene { Order, Indexed };
+//   constexpr fw::Choice<Scene> kScenes[] = {{Scene::Order, "order"}, {Scene::Indexed, "indexed"}};
+//
+//   fw::Param::choice("scene", kScenes, Scene::Order).help("which scene").key('S'),
 //   fw::Param::number("fov", 60).range(10, 150).unit("deg").key('F'),
 //   fw::Param::boolean("depth_test", true).key('D'),
+//
+// and in draw():  switch (params.get<Scene>("scene")) { case Scene::Order: ... }
+//
+// A choice is bound to a C++ enum, so the lab compares enum values, never
+// strings: a misspelt value is a compile error, and a declaration whose
+// default is not among its choices throws when the lab is registered.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <glm/glm.hpp>
+#include <initializer_list>
 #include <string>
+#include <typeindex>
+#include <typeinfo>
 #include <vector>
 
 namespace fw {
+
+// One value of a choice parameter: the C++ enum value and the name users type
+// (`--set scene=order`, checkpoints.json, the window's panel).
+template <class E>
+struct Choice {
+    E value;
+    const char* name;
+};
 
 enum class ParamType { Float, Int, Bool, Enum, Color };
 const char* param_type_name(ParamType t);
@@ -25,7 +46,9 @@ struct Param {
     std::string unit_text;
     double default_number = 0.0, min = 0.0, max = 1.0, step_size = 0.0;  // Float, Int
     bool default_flag = false;                                          // Bool
-    std::vector<std::string> choices;                                   // Enum
+    std::vector<std::string> choices;                                   // Enum: names
+    std::vector<long long> choice_values;  // Enum: the C++ enum value of each name
+    std::type_index choice_enum = typeid(void);  // Enum: the enum type it is bound to
     int default_choice = 0;
     glm::vec3 default_color{0.0f};  // Color
     // Window shortcut: a printable key ('A'..'Z', '0'..'9'). Bool toggles,
@@ -35,7 +58,19 @@ struct Param {
     static Param number(std::string name, double def);                   // float
     static Param integer(std::string name, int def);
     static Param boolean(std::string name, bool def);
-    static Param choice(std::string name, std::vector<std::string> choices, const std::string& def);
+    // A choice bound to the enum E; `options` in the order the panel lists them.
+    template <class E>
+    static Param choice(std::string name, std::initializer_list<Choice<E>> options, E def) {
+        return choice_of(std::move(name), options.begin(), options.size(), def);
+    }
+    template <class E, std::size_t N>
+    static Param choice(std::string name, const Choice<E> (&options)[N], E def) {
+        return choice_of(std::move(name), options, N, def);
+    }
+    template <class E, std::size_t N>
+    static Param choice(std::string name, const std::array<Choice<E>, N>& options, E def) {
+        return choice_of(std::move(name), options.data(), N, def);
+    }
     static Param color(std::string name, const std::string& hex_rrggbb);
 
     Param& range(double lo, double hi);
@@ -47,6 +82,23 @@ struct Param {
     double key_step() const;
     std::string default_text() const;  // as --set would take it
     std::string range_text() const;    // "[10, 150] deg", "{order, indexed}", "true|false", "hex rrggbb"
+
+private:
+    template <class E>
+    static Param choice_of(std::string name, const Choice<E>* options, std::size_t n, E def) {
+        std::vector<std::string> names;
+        std::vector<long long> values;
+        for (std::size_t i = 0; i < n; ++i) {
+            names.emplace_back(options[i].name);
+            values.push_back(static_cast<long long>(options[i].value));
+        }
+        return make_choice(std::move(name), std::move(names), std::move(values),
+                           static_cast<long long>(def), typeid(E));
+    }
+    // Checks the declaration (names non-empty and distinct, values distinct,
+    // the default among them) and throws fw::Error naming what is wrong.
+    static Param make_choice(std::string name, std::vector<std::string> names,
+                             std::vector<long long> values, long long def, std::type_index type);
 };
 
 // The resolved value of every parameter of one lab.
@@ -65,9 +117,17 @@ public:
     float number(const std::string& name) const;  // Float (also Int)
     int integer(const std::string& name) const;
     bool flag(const std::string& name) const;
-    const std::string& choice(const std::string& name) const;
-    int choice_index(const std::string& name) const;
     glm::vec3 color(const std::string& name) const;
+    // The value of a choice parameter as its enum; throws fw::Error when the
+    // parameter is not a choice bound to E.
+    template <class E>
+    E get(const std::string& name) const {
+        return static_cast<E>(choice_value(name, typeid(E)));
+    }
+
+    // Sets a number parameter to `value` clamped to its declared range, as a
+    // drag or scroll does; returns the value set.
+    double set_clamped(const std::string& name, double value);
 
     // Direct, validated access for the window panel.
     double& number_ref(const std::string& name);
@@ -89,6 +149,7 @@ private:
     };
     size_t index_of(const std::string& name) const;
     size_t index_of(const std::string& name, ParamType want) const;
+    long long choice_value(const std::string& name, std::type_index type) const;
 
     std::string lab_;
     const std::vector<Param>* params_ = nullptr;

@@ -11,7 +11,7 @@
 namespace fw {
 
 LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
-    : registered_(lab), context_(std::move(context)), lab_(lab.create()) {
+    : registered_(lab), context_(std::move(context)), programs_(lab.info.dir), lab_(lab.create()) {
     enable_debug_output();
     primitives_ = std::make_unique<Query>(GL_PRIMITIVES_GENERATED, "primitives generated");
     elapsed_ = std::make_unique<Query>(GL_TIME_ELAPSED, "frame time");
@@ -61,7 +61,7 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
         {"primitives_generated", primitives_->result()},
         {"render_ms", render_ms},
         {"gpu_ms", static_cast<double>(elapsed_->result()) / 1e6},
-        {"lab_stats", lab_->stats(params)},
+        {"lab_stats", lab_->stats(params, Frame{width, height, 0.0})},
     };
     check_gl(("read-back of lab " + registered_.info.id).c_str());
     return out;

@@ -1,7 +1,8 @@
 // Unit functions: the student functions of a lab (translate, lookAt, ...)
 // that the grader evaluates on inputs it chooses. A lab lists them in its
 // LabInfo; the `lab` child only calls them and reports what they return,
-// and `course` compares the results with its own reference (grading/units/).
+// and `course` compares the results with its own reference
+// (labs/NN_name/grading/*.cpp).
 //
 //   info.functions = {
 //       fw::unit_function("translate", &transforms::translate),  // mat4 (vec3)

@@ -1,11 +1,13 @@
 // Validating the checks of a data file, and planning the child's job.
 #include "grading/checks.hpp"
 
+#include <algorithm>
 #include <map>
 #include <random>
 #include <set>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/units/reference.hpp"
 
 namespace grading {
@@ -97,8 +99,8 @@ std::pair<int, int> render_size(const fw::Checkpoint& cp) {
     return {512, 512};
 }
 
-void validate_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check) {
-    CheckWhere w(lab, cp, index, check);
+// The check's kind, once it is known and every field is one that kind takes.
+std::string validated_kind(const CheckWhere& w, const json& check) {
     if (!check.is_object())
         w.fail("", "must be an object like {\"kind\": \"image\", \"points\": 1}");
     if (!check.contains("kind") || !check["kind"].is_string())
@@ -107,89 +109,110 @@ void validate_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, 
     auto fields = kFields.find(kind);
     if (fields == kFields.end())
         w.fail("kind", "is \"" + kind + "\"; it must be one of image, probe, stat, unit");
+    std::vector<std::string> allowed = {"kind", "points"};
+    if (kind != "unit") allowed.push_back("size");
+    allowed.insert(allowed.end(), fields->second.begin(), fields->second.end());
     for (const auto& [field, value] : check.items()) {
         (void)value;
-        if (field != "kind" && field != "points" && !(field == "size" && kind != "unit") &&
-            !fields->second.count(field)) {
-            std::string allowed = "kind, points";
-            if (kind != "unit") allowed += ", size";
-            for (const std::string& f : fields->second) allowed += ", " + f;
-            w.fail(field, "is not a field of a " + kind + " check; its fields are: " + allowed);
-        }
+        if (std::find(allowed.begin(), allowed.end(), field) == allowed.end())
+            w.fail(field, "is not a field of a " + kind +
+                              " check; its fields are: " + fw::join(allowed, ", "));
     }
+    return kind;
+}
+
+// "points", and "size", which every check of a checkpoint must share.
+void validate_points_and_size(const CheckWhere& w, const json& check, const fw::Checkpoint& cp) {
     if (!check.contains("points"))
         w.fail("points", "is missing: how many points the check is worth");
     w.number("points", 0, 1000);
-    if (check.contains("size") &&
-        (!is_size(check["size"]) || check["size"][0] < 1 || check["size"][1] < 1 ||
-         check["size"][0] > 8192 || check["size"][1] > 8192))
-        w.fail("size",
-               "must be [width, height], integers from 1 to 8192, got " + check["size"].dump());
+    if (!check.contains("size")) return;
+    const json& size = check["size"];
+    if (!is_size(size) || size[0] < 1 || size[1] < 1 || size[0] > 8192 || size[1] > 8192)
+        w.fail("size", "must be [width, height], integers from 1 to 8192, got " + size.dump());
     auto [width, height] = render_size(cp);
-    if (check.contains("size") && (check["size"][0] != width || check["size"][1] != height))
+    if (size[0] != width || size[1] != height)
         w.fail("size",
                "differs from another check's size; the checks of one checkpoint share one frame");
+}
 
-    if (kind == "image") {
-        if (w.has("tolerance")) w.integer("tolerance", 0, 255);
-        if (w.has("radius")) w.integer("radius", 0, 16);
-        if (w.has("max_fail_fraction")) w.number("max_fail_fraction", 0, 1);
-    } else if (kind == "probe") {
-        if (w.has("at") == w.has("ndc"))
-            w.fail("at", "or \"ndc\": a probe needs exactly one of them");
-        if (w.has("at")) {
-            std::vector<double> at = w.numbers("at", 2, 2, 0, 8192);
-            if (!w.get("at")[0].is_number_integer() || !w.get("at")[1].is_number_integer() ||
-                at[0] >= width || at[1] >= height)
-                w.fail("at", "must be an integer pixel inside the " + std::to_string(width) + "x" +
-                                 std::to_string(height) + " frame, got " + w.get("at").dump());
-        } else {
-            w.numbers("ndc", 2, 2, -1, 1);
-        }
-        if (w.has("color") == w.has("depth"))
-            w.fail("color", "or \"depth\": a probe needs exactly one of them");
-        if (w.has("color")) w.numbers("color", 3, 4, 0, 1);
-        if (w.has("depth")) w.number("depth", 0, 1);
-        if (w.has("tolerance")) w.number("tolerance", 0, 1);
-    } else if (kind == "stat") {
-        if (!w.has("stat") || !w.get("stat").is_string() ||
-            w.get("stat").get<std::string>().empty())
-            w.fail("stat", "must name a value of the frame's stats, e.g. \"primitives_generated\"");
-        if (!w.has("equals") && !w.has("min") && !w.has("max"))
-            w.fail("equals", "(or \"min\"/\"max\") is missing: what the value must be");
-        if (w.has("equals") && (w.has("min") || w.has("max")))
-            w.fail("equals", "cannot be combined with \"min\"/\"max\"");
-        if (w.has("min")) w.number("min", -1e300, 1e300);
-        if (w.has("max")) w.number("max", -1e300, 1e300);
-        if (w.has("tolerance")) {
-            w.number("tolerance", 0, 1e300);
-            if (!w.has("equals") || !w.get("equals").is_number())
-                w.fail("tolerance", "only applies to a numeric \"equals\"");
-        }
+void validate_image(const CheckWhere& w) {
+    if (w.has("tolerance")) w.integer("tolerance", 0, 255);
+    if (w.has("radius")) w.integer("radius", 0, 16);
+    if (w.has("max_fail_fraction")) w.number("max_fail_fraction", 0, 1);
+}
+
+void validate_probe(const CheckWhere& w, const fw::Checkpoint& cp) {
+    if (w.has("at") == w.has("ndc")) w.fail("at", "or \"ndc\": a probe needs exactly one of them");
+    if (w.has("at")) {
+        auto [width, height] = render_size(cp);
+        std::vector<double> at = w.numbers("at", 2, 2, 0, 8192);
+        if (!w.get("at")[0].is_number_integer() || !w.get("at")[1].is_number_integer() ||
+            at[0] >= width || at[1] >= height)
+            w.fail("at", "must be an integer pixel inside the " + std::to_string(width) + "x" +
+                             std::to_string(height) + " frame, got " + w.get("at").dump());
     } else {
-        if (!w.has("function") || !w.get("function").is_string())
-            w.fail("function", "must name a unit function, e.g. \"translate\"");
-        const ReferenceUnit* ref = nullptr;
+        w.numbers("ndc", 2, 2, -1, 1);
+    }
+    if (w.has("color") == w.has("depth"))
+        w.fail("color", "or \"depth\": a probe needs exactly one of them");
+    if (w.has("color")) w.numbers("color", 3, 4, 0, 1);
+    if (w.has("depth")) w.number("depth", 0, 1);
+    if (w.has("tolerance")) w.number("tolerance", 0, 1);
+}
+
+void validate_stat(const CheckWhere& w) {
+    if (!w.has("stat") || !w.get("stat").is_string() || w.get("stat").get<std::string>().empty())
+        w.fail("stat", "must name a value of the frame's stats, e.g. \"primitives_generated\"");
+    if (!w.has("equals") && !w.has("min") && !w.has("max"))
+        w.fail("equals", "(or \"min\"/\"max\") is missing: what the value must be");
+    if (w.has("equals") && (w.has("min") || w.has("max")))
+        w.fail("equals", "cannot be combined with \"min\"/\"max\"");
+    if (w.has("min")) w.number("min", -1e300, 1e300);
+    if (w.has("max")) w.number("max", -1e300, 1e300);
+    if (w.has("tolerance")) {
+        w.number("tolerance", 0, 1e300);
+        if (!w.has("equals") || !w.get("equals").is_number())
+            w.fail("tolerance", "only applies to a numeric \"equals\"");
+    }
+}
+
+void validate_unit(const CheckWhere& w, const LabData& lab) {
+    if (!w.has("function") || !w.get("function").is_string())
+        w.fail("function", "must name a unit function, e.g. \"translate\"");
+    const ReferenceUnit* ref = nullptr;
+    try {
+        ref = &find_reference(lab.id, w.get("function").get_ref<const std::string&>());
+    } catch (const fw::Error& e) {
+        w.fail("function", e.what());
+    }
+    if (w.has("random")) w.integer("random", 0, 100000);
+    if (w.has("tolerance")) w.number("tolerance", 0, 1);
+    if (!w.has("edge")) return;
+    if (!w.get("edge").is_array()) w.fail("edge", "must be a list of argument lists");
+    for (const json& args : w.get("edge")) {
         try {
-            ref = &find_reference(lab.id, w.get("function").get_ref<const std::string&>());
-        } catch (const fw::Error& e) {
-            w.fail("function", e.what());
-        }
-        if (w.has("random")) w.integer("random", 0, 100000);
-        if (w.has("tolerance")) w.number("tolerance", 0, 1);
-        if (w.has("edge")) {
-            if (!w.get("edge").is_array()) w.fail("edge", "must be a list of argument lists");
-            for (const json& args : w.get("edge")) {
-                try {
-                    ref->function.call(
-                        args);  // the reference accepts them, so the lab's signature does
-                } catch (const std::exception& e) {
-                    w.fail("edge", "has the argument list " + args.dump() + " that '" +
-                                       ref->function.name + "' does not take: " + e.what());
-                }
-            }
+            // The reference accepts them, so the lab's signature does.
+            ref->function.call(args);
+        } catch (const std::exception& e) {
+            w.fail("edge", "has the argument list " + args.dump() + " that '" + ref->function.name +
+                               "' does not take: " + e.what());
         }
     }
+}
+
+void validate_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check) {
+    CheckWhere w(lab, cp, index, check);
+    const std::string kind = validated_kind(w, check);
+    validate_points_and_size(w, check, cp);
+    if (kind == "image")
+        validate_image(w);
+    else if (kind == "probe")
+        validate_probe(w, cp);
+    else if (kind == "stat")
+        validate_stat(w);
+    else
+        validate_unit(w, lab);
 }
 
 }  // namespace

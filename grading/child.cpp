@@ -31,8 +31,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string mib_text(std::uint64_t bytes) { return std::to_string(bytes / kMiB) + " MiB"; }
-
 std::string seconds_text(double s) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g", s);
@@ -41,7 +39,7 @@ std::string seconds_text(double s) {
 
 // After fork() in a threaded program only async-signal-safe calls may run
 // until exec: no malloc, no stdio. These write a fixed message and the errno.
-void child_fail(const char* what) {
+[[noreturn]] void child_fail(const char* what) {
     int e = errno;
     char digits[16];
     int n = 0;
@@ -66,7 +64,17 @@ void switch_user(const RunAsUser& user) {
         child_fail("setuid check");
 }
 
-// Bytes in regular files under `dir`, not following links.
+void set_limit(int resource, rlim_t value, const char* name) {
+    struct rlimit r {
+        value, value
+    };
+    if (setrlimit(resource, &r) != 0) child_fail(name);
+}
+
+}  // namespace
+
+std::string mib_text(std::uint64_t bytes) { return std::to_string(bytes / kMiB) + " MiB"; }
+
 std::uint64_t directory_bytes(const std::string& dir) {
     std::uint64_t total = 0;
     std::error_code ec;
@@ -80,15 +88,6 @@ std::uint64_t directory_bytes(const std::string& dir) {
     }
     return total;
 }
-
-void set_limit(int resource, rlim_t value, const char* name) {
-    struct rlimit r {
-        value, value
-    };
-    if (setrlimit(resource, &r) != 0) child_fail(name);
-}
-
-}  // namespace
 
 std::string signal_status(int signal) {
     const char* abbrev = sigabbrev_np(signal);
@@ -177,214 +176,197 @@ WorkDir::~WorkDir() {
     fs::remove_all(path_, ec);
 }
 
-ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
-                   const ChildLimits& limits, const RunAsUser* user) {
-    // Everything the forked process needs is built before fork().
-    std::vector<char*> cargv;
-    for (const std::string& a : argv) cargv.push_back(const_cast<char*>(a.c_str()));
-    cargv.push_back(nullptr);
-    std::vector<std::string> env_store;
-    for (char** e = environ; *e; ++e) {
-        std::string entry = *e;
-        if (user && (entry.rfind("HOME=", 0) == 0 || entry.rfind("USER=", 0) == 0 ||
-                     entry.rfind("LOGNAME=", 0) == 0))
-            continue;
-        env_store.push_back(entry);
-    }
-    if (user) {
-        env_store.push_back("HOME=" + dir);
-        env_store.push_back("USER=" + user->name);
-        env_store.push_back("LOGNAME=" + user->name);
-    }
-    std::vector<char*> cenv;
-    for (std::string& e : env_store) cenv.push_back(e.data());
-    cenv.push_back(nullptr);
-    // llvmpipe renders on every core and RLIMIT_CPU sums all threads: the
-    // wall-clock timeout is the real limit; this one only stops a child that
-    // outlives a killed course.
+namespace {
+
+// llvmpipe renders on every core and RLIMIT_CPU sums all threads: the
+// wall-clock timeout is the real limit; this one only stops a child that
+// outlives a killed course.
+rlim_t cpu_seconds_for(const ChildLimits& limits) {
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    const rlim_t cpu_seconds = static_cast<rlim_t>(std::ceil(limits.timeout_seconds)) * cores + 10;
+    return static_cast<rlim_t>(std::ceil(limits.timeout_seconds)) * cores + 10;
+}
 
-    int fds[2];
-    if (pipe2(fds, O_CLOEXEC) != 0) throw fw::Error(std::string("pipe: ") + std::strerror(errno));
-    int devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
-    const pid_t parent = getpid();
-    const auto start = std::chrono::steady_clock::now();
-    pid_t pid = fork();
-    if (pid < 0) throw fw::Error(std::string("cannot fork the lab child: ") + std::strerror(errno));
-    if (pid == 0) {
-        setpgid(0, 0);  // its own group: a timeout kills whatever it started too
-        if (dup2(devnull, 0) < 0 || dup2(fds[1], 1) < 0 || dup2(fds[1], 2) < 0) child_fail("dup2");
-        if (chdir(dir.c_str()) != 0) child_fail("chdir to the work directory");
-        set_limit(RLIMIT_CPU, cpu_seconds, "RLIMIT_CPU");
-        set_limit(RLIMIT_FSIZE, limits.file_cap, "RLIMIT_FSIZE");
-        set_limit(RLIMIT_NOFILE, static_cast<rlim_t>(limits.open_files), "RLIMIT_NOFILE");
-        set_limit(RLIMIT_CORE, 0, "RLIMIT_CORE");
-#if !defined(__SANITIZE_ADDRESS__)
-        // Not under AddressSanitizer: its shadow memory reserves terabytes of
-        // address space, so any RLIMIT_AS would stop the (equally sanitized)
-        // child before main().
-        set_limit(RLIMIT_AS, limits.memory_cap, "RLIMIT_AS");
-#endif
-        if (user) switch_user(*user);
-        // Killed with course (set after setuid, which clears it).
-        if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) child_fail("prctl");
-        execve(cargv[0], cargv.data(), cenv.data());
-        child_fail("exec of the lab executable");
-    }
-    setpgid(pid, pid);  // also here, so that killpg works before the child gets to it
-    close(fds[1]);
-    if (devnull >= 0) close(devnull);
-    fcntl(fds[0], F_SETFL, O_NONBLOCK);
-
-    ChildRun run;
-    std::uint64_t written = 0;
-    bool killed = false, exited = false, eof = false;
-    int wait_status = 0;
-    auto elapsed = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    };
-    auto stop = [&](const std::string& why) {
-        if (!killed) run.status = why;
-        killed = true;
-        killpg(pid, SIGKILL);
-    };
-    double next_size_check = 0.25, drain_until = 0.0;
-    char buf[65536];
-    // Until it has exited and its pipe is drained (or held open past the
-    // drain time by something it left behind).
-    while (!(exited && (eof || elapsed() > drain_until))) {
-        struct pollfd p {
-            fds[0], POLLIN, 0
-        };
-        poll(&p, eof ? 0 : 1, 50);  // after EOF: just wait
-        while (!eof) {
-            ssize_t n = read(fds[0], buf, sizeof buf);
-            if (n > 0) {
-                written += static_cast<std::uint64_t>(n);
-                run.log.append(buf, static_cast<size_t>(n));
-                if (run.log.size() > 2 * limits.log_kept)
-                    run.log.erase(0, run.log.size() - limits.log_kept);
-                if (written > limits.output_cap)
-                    stop("wrote more than " + mib_text(limits.output_cap) + " to stdout/stderr");
+// Everything the forked process needs, built before fork(): argv and the
+// environment as execve() takes them (course's environment, with HOME, USER
+// and LOGNAME those of `user`), and its limits.
+struct ChildStart {
+    ChildStart(const std::vector<std::string>& args, const std::string& work_dir,
+               const ChildLimits& child_limits, const RunAsUser* run_as)
+        : dir(work_dir), limits(child_limits), user(run_as) {
+        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        for (char** e = environ; *e; ++e) {
+            std::string entry = *e;
+            if (user && (entry.rfind("HOME=", 0) == 0 || entry.rfind("USER=", 0) == 0 ||
+                         entry.rfind("LOGNAME=", 0) == 0))
                 continue;
+            env_store.push_back(entry);
+        }
+        if (user) {
+            env_store.push_back("HOME=" + dir);
+            env_store.push_back("USER=" + user->name);
+            env_store.push_back("LOGNAME=" + user->name);
+        }
+        for (std::string& e : env_store) envp.push_back(e.data());
+        envp.push_back(nullptr);
+    }
+
+    std::vector<char*> argv;
+    std::vector<std::string> env_store;
+    std::vector<char*> envp;
+    std::string dir;
+    ChildLimits limits;
+    const RunAsUser* user;
+    rlim_t cpu_seconds = cpu_seconds_for(limits);
+    pid_t parent = getpid();
+    int devnull = -1;  // its stdin
+    int out = -1;      // its stdout and stderr
+};
+
+// The forked child, until it runs the lab: its own process group, its
+// descriptors, limits and user.
+[[noreturn]] void exec_child(const ChildStart& c) {
+    setpgid(0, 0);  // its own group: a timeout kills whatever it started too
+    if (dup2(c.devnull, 0) < 0 || dup2(c.out, 1) < 0 || dup2(c.out, 2) < 0) child_fail("dup2");
+    if (chdir(c.dir.c_str()) != 0) child_fail("chdir to the work directory");
+    set_limit(RLIMIT_CPU, c.cpu_seconds, "RLIMIT_CPU");
+    set_limit(RLIMIT_FSIZE, c.limits.file_cap, "RLIMIT_FSIZE");
+    set_limit(RLIMIT_NOFILE, static_cast<rlim_t>(c.limits.open_files), "RLIMIT_NOFILE");
+    set_limit(RLIMIT_CORE, 0, "RLIMIT_CORE");
+#if !defined(__SANITIZE_ADDRESS__)
+    // Not under AddressSanitizer: its shadow memory reserves terabytes of
+    // address space, so any RLIMIT_AS would stop the (equally sanitized)
+    // child before main().
+    set_limit(RLIMIT_AS, c.limits.memory_cap, "RLIMIT_AS");
+#endif
+    if (c.user) switch_user(*c.user);
+    // Killed with course (set after setuid, which clears it).
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != c.parent) child_fail("prctl");
+    execve(c.argv[0], c.argv.data(), c.envp.data());
+    child_fail("exec of the lab executable");
+}
+
+// The parent's side of a running child: keeps the tail of its output, and
+// kills its whole process group, saying why, when it breaks a limit.
+class ChildWatch {
+public:
+    using Clock = std::chrono::steady_clock;
+    ChildWatch(pid_t pid, int out, const ChildStart& c, Clock::time_point start)
+        : pid_(pid), out_(out), dir_(c.dir), limits_(c.limits), start_(start) {}
+
+    // Until the child has exited and its pipe is drained (or held open past
+    // the drain time by something it left behind).
+    void watch() {
+        while (!(exited_ && (eof_ || elapsed() > drain_until_))) {
+            struct pollfd p {
+                out_, POLLIN, 0
+            };
+            poll(&p, eof_ ? 0 : 1, 50);  // after EOF: just wait
+            read_output();
+            if (!exited_ && waitpid(pid_, &wait_status_, WNOHANG) == pid_) {
+                exited_ = true;
+                killpg(pid_, SIGKILL);  // anything it started and left running
+                // What is still in the pipe, unless something holds it open.
+                drain_until_ = elapsed() + 0.5;
             }
-            if (n == 0) eof = true;
-            break;
+            if (!exited_) check_limits();
         }
-        if (!exited && waitpid(pid, &wait_status, WNOHANG) == pid) {
-            exited = true;
-            killpg(pid, SIGKILL);  // anything it started and left running
-            drain_until =
-                elapsed() + 0.5;  // what is still in the pipe, unless something holds it open
+        run_.seconds = elapsed();
+        if (run_.log.size() > limits_.log_kept)
+            run_.log.erase(0, run_.log.size() - limits_.log_kept);
+    }
+
+    bool killed() const { return killed_; }
+    int wait_status() const { return wait_status_; }
+    ChildRun& run() { return run_; }
+
+private:
+    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+    void stop(const std::string& why) {
+        if (!killed_) run_.status = why;
+        killed_ = true;
+        killpg(pid_, SIGKILL);
+    }
+
+    void read_output() {
+        char buf[65536];
+        while (!eof_) {
+            const ssize_t n = read(out_, buf, sizeof buf);
+            if (n == 0) eof_ = true;
+            if (n <= 0) return;
+            written_ += static_cast<std::uint64_t>(n);
+            run_.log.append(buf, static_cast<size_t>(n));
+            if (run_.log.size() > 2 * limits_.log_kept)
+                run_.log.erase(0, run_.log.size() - limits_.log_kept);
+            if (written_ > limits_.output_cap)
+                stop("wrote more than " + mib_text(limits_.output_cap) + " to stdout/stderr");
         }
-        if (!exited && elapsed() > limits.timeout_seconds)
-            stop("timed out after " + seconds_text(limits.timeout_seconds) + " s");
-        if (!exited && elapsed() > next_size_check) {
-            next_size_check = elapsed() + 0.25;
-            if (directory_bytes(dir) > limits.work_dir_cap)
-                stop("wrote more than " + mib_text(limits.work_dir_cap) +
+    }
+
+    void check_limits() {
+        if (elapsed() > limits_.timeout_seconds)
+            stop("timed out after " + seconds_text(limits_.timeout_seconds) + " s");
+        if (elapsed() > next_size_check_) {
+            next_size_check_ = elapsed() + 0.25;
+            if (directory_bytes(dir_) > limits_.work_dir_cap)
+                stop("wrote more than " + mib_text(limits_.work_dir_cap) +
                      " into its work directory");
         }
     }
-    close(fds[0]);
-    run.seconds = elapsed();
-    if (run.log.size() > limits.log_kept) run.log.erase(0, run.log.size() - limits.log_kept);
-    if (killed) return run;
+
+    pid_t pid_;
+    int out_;
+    const std::string& dir_;
+    const ChildLimits& limits_;
+    Clock::time_point start_;
+    ChildRun run_;
+    std::uint64_t written_ = 0;
+    bool killed_ = false, exited_ = false, eof_ = false;
+    int wait_status_ = 0;
+    double next_size_check_ = 0.25, drain_until_ = 0.0;
+};
+
+// How a child that was not killed ended, as ChildRun::status says it.
+std::string exit_status(int wait_status, const ChildStart& c) {
     if (WIFSIGNALED(wait_status)) {
         const int sig = WTERMSIG(wait_status);
-        run.status = signal_status(sig);
+        std::string status = signal_status(sig);
         if (sig == SIGXFSZ)
-            run.status += ": it wrote a file over the " + mib_text(limits.file_cap) + " limit";
+            status += ": it wrote a file over the " + mib_text(c.limits.file_cap) + " limit";
         if (sig == SIGXCPU)
-            run.status += ": it used more than " + std::to_string(cpu_seconds) + " s of CPU time";
-    } else if (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) != 0) {
-        run.status = "exit status " + std::to_string(WEXITSTATUS(wait_status));
+            status += ": it used more than " + std::to_string(c.cpu_seconds) + " s of CPU time";
+        return status;
     }
+    if (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) != 0)
+        return "exit status " + std::to_string(WEXITSTATUS(wait_status));
+    return "ok";
+}
+
+}  // namespace
+
+ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
+                   const ChildLimits& limits, const RunAsUser* user) {
+    ChildStart start(argv, dir, limits, user);
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) throw fw::Error(std::string("pipe: ") + std::strerror(errno));
+    start.devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
+    start.out = fds[1];
+    const auto started = ChildWatch::Clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) throw fw::Error(std::string("cannot fork the lab child: ") + std::strerror(errno));
+    if (pid == 0) exec_child(start);
+    setpgid(pid, pid);  // also here, so that killpg works before the child gets to it
+    close(fds[1]);
+    if (start.devnull >= 0) close(start.devnull);
+    fcntl(fds[0], F_SETFL, O_NONBLOCK);
+
+    ChildWatch watch(pid, fds[0], start, started);
+    watch.watch();
+    close(fds[0]);
+    ChildRun run = std::move(watch.run());
+    if (!watch.killed()) run.status = exit_status(watch.wait_status(), start);
     return run;
-}
-
-ChildOutputs::ChildOutputs(std::string dir, const ChildRun& run, const ChildLimits& limits)
-    : dir_(std::move(dir)), run_(run) {
-    const std::uint64_t total = directory_bytes(dir_);
-    if (total > limits.work_dir_cap)
-        too_large_ = "output too large: the child left " + std::to_string(total) +
-                     " bytes in its work directory, more than the " +
-                     mib_text(limits.work_dir_cap) + " limit";
-}
-
-std::string ChildOutputs::missing_reason(const std::string& name) const {
-    if (!run_.ok()) return "the child " + run_.status + " before writing " + name;
-    const std::string error_file = name.substr(0, name.find('.')) + ".error.txt";
-    std::string text, why;
-    if (error_file != name && read(error_file, 64 * 1024, text, why)) {
-        while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-        return "the lab could not produce " + name + ": " + text;
-    }
-    return "the child exited normally without writing " + name;
-}
-
-bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::string& bytes,
-                        std::string& why) const {
-    if (!too_large_.empty()) {
-        why = too_large_;
-        return false;
-    }
-    const std::string file = dir_ + "/" + name;
-    struct stat st;
-    if (lstat(file.c_str(), &st) != 0) {
-        why = errno == ENOENT ? missing_reason(name) : name + ": " + std::strerror(errno);
-        return false;
-    }
-    // A link could point at a reference image or any file course may read.
-    if (!S_ISREG(st.st_mode) || st.st_nlink != 1) {
-        why = name + " is not a regular file with one link; refused";
-        return false;
-    }
-    if (static_cast<std::uint64_t>(st.st_size) > limit) {
-        why = "output too large: " + name + " is " + std::to_string(st.st_size) +
-              " bytes, more than the limit of " + std::to_string(limit);
-        return false;
-    }
-    int fd = open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) {
-        why = "cannot read " + name + ": " + std::strerror(errno);
-        return false;
-    }
-    bytes.clear();
-    char buf[65536];
-    ssize_t n;
-    while ((n = ::read(fd, buf, sizeof buf)) > 0 && bytes.size() <= limit)
-        bytes.append(buf, static_cast<size_t>(n));
-    close(fd);
-    if (bytes.size() > limit) {
-        why = "output too large: " + name + " grew past " + std::to_string(limit) + " bytes";
-        return false;
-    }
-    return true;
-}
-
-LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
-                       const std::string& backend, const ChildLimits& limits,
-                       const RunAsUser* user) {
-    LabChild child;
-    child.dir = std::make_unique<WorkDir>(user);
-    const std::string dir = child.dir->path();
-    const std::string job_path = dir + "/JOB.json";
-    {
-        // Written while the directory is still course's: nothing of the
-        // user's can have put a link in its place.
-        std::ofstream out(job_path);
-        if (!(out << job.dump(1) << "\n")) throw fw::Error("cannot write '" + job_path + "'");
-    }
-    child.dir->hand_over();
-    std::vector<std::string> argv = {lab_binary, "grade-child", "--job", job_path, "--out", dir};
-    if (!backend.empty()) argv.insert(argv.end(), {"--backend", backend});
-    child.run = run_child(argv, dir, limits, user);
-    child.outputs = std::make_unique<ChildOutputs>(dir, child.run, limits);
-    if (child.run.ok() && !child.outputs->too_large().empty())
-        child.run.status = child.outputs->too_large();
-    return child;
 }
 
 }  // namespace grading

@@ -103,6 +103,12 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                        const std::string& backend, const ChildLimits& limits,
                        const RunAsUser* user);
 
+// "8 MiB": a byte count in whole MiB, for messages about limits.
+std::string mib_text(std::uint64_t bytes);
+
+// Bytes in regular files under `dir`, not following links.
+std::uint64_t directory_bytes(const std::string& dir);
+
 // "crashed (signal 11, SIGSEGV)".
 std::string signal_status(int signal);
 

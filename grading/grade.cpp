@@ -11,6 +11,7 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <random>
@@ -18,6 +19,7 @@
 #include <thread>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/checks.hpp"
 #include "grading/commands.hpp"
 #include "grading/reports.hpp"
@@ -60,8 +62,7 @@ std::vector<LabData> discover_labs(const std::string& root) {
 std::vector<LabData> select_labs(const std::vector<LabData>& all,
                                  const std::vector<std::string>& names) {
     if (names.empty()) return all;
-    std::string known;
-    for (const LabData& lab : all) known += (known.empty() ? "" : ", ") + lab.id;
+    const std::string known = fw::join(all, ", ", &LabData::id);
     std::set<std::string> wanted;
     for (const std::string& name : names) {
         bool found = false;
@@ -155,6 +156,46 @@ std::string score_text(double v) {
     return buf;
 }
 
+// The line `course grade` prints as a lab finishes, with the tail of its log
+// when its child failed.
+void print_progress(const LabResult& result) {
+    const std::string score = score_text(result.score()) + "/" + score_text(result.max_score());
+    std::printf("%-16s %9s  %5.1f s  %s\n", result.lab.c_str(), score.c_str(), result.seconds,
+                result.status.c_str());
+    if (result.status != "ok") std::printf("%s", indented_tail(result.log, 12).c_str());
+    std::fflush(stdout);
+}
+
+// Calls `fn(i)` for every i below `count` on up to `jobs` threads, each
+// taking the next i in order; rethrows the first exception once all are done.
+void parallel_for(size_t count, int jobs, const std::function<void(size_t)>& fn) {
+    std::atomic<size_t> next{0};
+    std::mutex failure_mutex;
+    std::exception_ptr failure;
+    auto worker = [&] {
+        for (size_t i; (i = next++) < count;) {
+            try {
+                fn(i);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(failure_mutex);
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> workers;
+    const size_t n = std::min<size_t>(static_cast<size_t>(std::max(1, jobs)), count);
+    for (size_t i = 0; i < n; ++i) workers.emplace_back(worker);
+    for (std::thread& t : workers) t.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
+std::string backend_name(const GradeOptions& options) {
+    const char* env_backend = std::getenv("LAB_BACKEND");
+    return !options.backend.empty()      ? options.backend
+           : env_backend && *env_backend ? env_backend
+                                         : "auto";
+}
+
 }  // namespace
 
 int grade_command(const GradeOptions& options) {
@@ -175,46 +216,22 @@ int grade_command(const GradeOptions& options) {
     limits.timeout_seconds = options.timeout_seconds;
 
     GradeRun run;
-    const char* env_backend = std::getenv("LAB_BACKEND");
-    run.backend = !options.backend.empty()      ? options.backend
-                  : env_backend && *env_backend ? env_backend
-                                                : "auto";
+    run.backend = backend_name(options);
     run.labs.resize(labs.size());
-
     // --jobs workers take labs in order; each lab is one child.
-    std::atomic<size_t> next{0};
     std::mutex print_mutex;
-    std::exception_ptr failure;
-    auto worker = [&] {
-        for (size_t i; (i = next++) < labs.size();) {
-            try {
-                LabChild child =
-                    run_lab_child(lab_binary, plans[i].job, options.backend, limits, as);
-                LabResult& result = run.labs[i];
-                result.lab = labs[i].id;
-                result.status = child.run.status;
-                result.log = child.run.log;
-                result.seconds = child.run.seconds;
-                result.checks = judge_lab(labs[i], plans[i], *child.outputs, options.out);
-                if (!options.progress) continue;
-                std::lock_guard<std::mutex> lock(print_mutex);
-                const std::string score =
-                    score_text(result.score()) + "/" + score_text(result.max_score());
-                std::printf("%-16s %9s  %5.1f s  %s\n", result.lab.c_str(), score.c_str(),
-                            result.seconds, result.status.c_str());
-                if (!child.run.ok()) std::printf("%s", indented_tail(result.log, 12).c_str());
-                std::fflush(stdout);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(print_mutex);
-                if (!failure) failure = std::current_exception();
-            }
-        }
-    };
-    std::vector<std::thread> workers;
-    const size_t n = std::min<size_t>(static_cast<size_t>(std::max(1, options.jobs)), labs.size());
-    for (size_t i = 0; i < n; ++i) workers.emplace_back(worker);
-    for (std::thread& t : workers) t.join();
-    if (failure) std::rethrow_exception(failure);
+    parallel_for(labs.size(), options.jobs, [&](size_t i) {
+        LabChild child = run_lab_child(lab_binary, plans[i].job, options.backend, limits, as);
+        LabResult& result = run.labs[i];
+        result.lab = labs[i].id;
+        result.status = child.run.status;
+        result.log = child.run.log;
+        result.seconds = child.run.seconds;
+        result.checks = judge_lab(labs[i], plans[i], *child.outputs, options.out);
+        if (!options.progress) return;
+        std::lock_guard<std::mutex> lock(print_mutex);
+        print_progress(result);
+    });
 
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_reports(run, options.out);

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/checks.hpp"
 #include "grading/report_text.hpp"
 #include "grading/units/reference.hpp"
@@ -38,11 +39,7 @@ std::string compact(const json& j, size_t max = 240) {
     return s.size() > max ? s.substr(0, max) + "..." : s;
 }
 
-std::string tuple(const std::vector<double>& v) {
-    std::string s = "(";
-    for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + num(v[i]);
-    return s + ")";
-}
+std::string tuple(const std::vector<double>& v) { return "(" + fw::join(v, ", ", num) + ")"; }
 
 // One checkpoint's frame, each output read once for all its checks.
 class Frame {
@@ -298,8 +295,8 @@ void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, uns
         if (ok) {
             ++passed;
         } else if (shown++ < 3) {
-            std::string args;
-            for (const json& a : c.args) args += (args.empty() ? "" : ", ") + compact(a, 120);
+            const std::string args =
+                fw::join(c.args, ", ", [](const json& a) { return compact(a, 120); });
             failures +=
                 "  " + ref.function.name + "(" + args + ")" + (c.edge ? " [edge case]" : "") +
                 "\n    expected " + compact(expected) + "\n    observed " +

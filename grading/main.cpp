@@ -4,52 +4,99 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <functional>
+#include <vector>
 
 #include "framework/error.hpp"
 #include "grading/commands.hpp"
 #include "grading/gradescope.hpp"
 
-int main(int argc, char** argv) {
-    CLI::App app{"course: grade the labs, bless references, release the student version"};
-    app.require_subcommand(1);
+namespace {
 
-    grading::GradeOptions g;
+const char* const kBackendHelp =
+    "auto|osmesa|egl (default $LAB_BACKEND, else auto: EGL, then OSMesa)";
+
+// A subcommand and what runs it once its options are parsed.
+struct Command {
+    CLI::App* app;
+    std::function<int()> run;
+};
+
+Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     auto* grade = app.add_subcommand("grade", "Grade labs offscreen and write the reports");
     grade->add_option("LAB", g.labs, "Labs to grade (default: all)");
-    grade->add_option("--lab", g.lab_binary, "The lab executable to grade (default: beside course)");
+    grade->add_option("--lab", g.lab_binary,
+                      "The lab executable to grade (default: beside course)");
     grade->add_option("--out", g.out, "Report directory (default build/grade)");
-    const char* backend_help =
-        "auto|osmesa|egl (default $LAB_BACKEND, else auto: EGL, then OSMesa)";
-    grade->add_option("--backend", g.backend, backend_help);
+    grade->add_option("--backend", g.backend, kBackendHelp);
     grade->add_option("--jobs", g.jobs, "Labs graded in parallel")->check(CLI::Range(1, 64));
     grade->add_option("--timeout", g.timeout_seconds, "Seconds per lab (default 60)")
         ->check(CLI::Range(1.0, 3600.0));
     grade->add_option("--run-as", g.run_as, "Run the child as this user (when root)");
+    return {grade, [&g] { return grading::grade_command(g); }};
+}
 
-    grading::BlessOptions b;
+Command add_bless(CLI::App& app, grading::BlessOptions& b) {
     auto* bless = app.add_subcommand("bless", "Re-render the reference images from this build");
     bless->add_option("LAB", b.labs, "Labs to bless (default: all)");
     bless->add_option("--lab", b.lab_binary, "The lab executable (default: beside course)");
-    bless->add_option("--backend", b.backend, backend_help);
+    bless->add_option("--backend", b.backend, kBackendHelp);
+    return {bless, [&b] { return grading::bless_command(b); }};
+}
 
-    std::string release_out;
+Command add_release(CLI::App& app, std::string& out) {
     auto* release = app.add_subcommand("release", "Write the student version of the repository");
-    release->add_option("--out", release_out, "Directory to write (must not exist or be empty)")
+    release->add_option("--out", out, "Directory to write (must not exist or be empty)")
         ->required();
+    return {release, [&out] { return grading::release_command(out); }};
+}
 
-    std::string gradescope_out;
+Command add_gradescope(CLI::App& app, std::string& out) {
     auto* gradescope = app.add_subcommand("gradescope", "Write a Gradescope autograder folder");
-    gradescope->add_option("--out", gradescope_out, "Directory to write")->required();
+    gradescope->add_option("--out", out, "Directory to write")->required();
+    return {gradescope, [&out] { return grading::gradescope_command(out); }};
+}
 
-    // Hidden: the autograder's run_autograder (grading/gradescope/) calls it
-    // when a submission cannot be graded.
-    std::string ng_reason, ng_log, ng_out;
-    auto* not_graded =
-        app.add_subcommand("not-graded", "Write reports that fail every check with a reason");
-    not_graded->group("");
-    not_graded->add_option("--reason", ng_reason, "Why nothing was graded")->required();
-    not_graded->add_option("--log", ng_log, "A log whose last 200 lines go into the output");
-    not_graded->add_option("--out", ng_out, "Report directory")->required();
+// Hidden: the autograder's run_autograder (grading/gradescope/) runs it for
+// each submission. The timeout is passed on to `course grade` as given, so
+// that a value grade refuses fails the grading with grade's own message.
+Command add_autograde(CLI::App& app, grading::AutogradeOptions& a) {
+    auto* autograde = app.add_subcommand(
+        "autograde", "Grade a Gradescope submission and write results/results.json");
+    autograde->group("");
+    autograde->add_option("--root", a.root, "Holds source/, submission/, results/ (/autograder)");
+    autograde->add_option("--user", a.user, "Build and run the submission as this user (student)");
+    autograde->add_option("--timeout", a.timeout, "Seconds per lab, for course grade (60)");
+    return {autograde, [&a] { return grading::autograde_command(a); }};
+}
+
+// Runs the chosen command; errors print as `course: error: ...`, exit 2.
+int run_chosen(const std::vector<Command>& commands) {
+    try {
+        for (const Command& command : commands)
+            if (*command.app) return command.run();
+    } catch (const fw::Error& e) {
+        std::fprintf(stderr, "course: error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "course: internal error: %s\n", e.what());
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"course: grade the labs, bless references, release the student version"};
+    app.require_subcommand(1);
+    grading::GradeOptions grade;
+    grading::BlessOptions bless;
+    std::string release_out, gradescope_out;
+    grading::AutogradeOptions autograde;
+    const std::vector<Command> commands = {
+        add_grade(app, grade), add_bless(app, bless), add_release(app, release_out),
+        add_gradescope(app, gradescope_out), add_autograde(app, autograde)};
 
     try {
         app.parse(argc, argv);
@@ -61,19 +108,5 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "course: %s\nRun 'course --help' for usage.\n", e.what());
         return 2;
     }
-
-    try {
-        if (*grade) return grading::grade_command(g);
-        if (*bless) return grading::bless_command(b);
-        if (*release) return grading::release_command(release_out);
-        if (*gradescope) return grading::gradescope_command(gradescope_out);
-        if (*not_graded) return grading::not_graded_command(ng_reason, ng_log, ng_out);
-    } catch (const fw::Error& e) {
-        std::fprintf(stderr, "course: error: %s\n", e.what());
-        return 2;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "course: internal error: %s\n", e.what());
-        return 2;
-    }
-    return 0;
+    return run_chosen(commands);
 }

@@ -69,74 +69,103 @@ std::string student_line(std::string_view body) {
     return std::string(body.substr(0, indent)) + std::string(code);
 }
 
+// One line of a text: as written, without its ending ("\n", "\r\n" or none
+// at the end of the file), and that ending.
+struct TextLine {
+    std::string_view whole, body, ending;
+};
+
+// The line that starts at `pos`; moves `pos` to the next one.
+TextLine take_line(const std::string& text, size_t& pos) {
+    const size_t nl = text.find('\n', pos);
+    const size_t next = nl == std::string::npos ? text.size() : nl + 1;
+    TextLine l;
+    l.whole = std::string_view(text.data() + pos, next - pos);
+    l.body = l.whole.substr(0, nl == std::string::npos ? l.whole.size() : l.whole.size() - 1);
+    if (!l.body.empty() && l.body.back() == '\r') l.body.remove_suffix(1);
+    l.ending = l.whole.substr(l.body.size());
+    pos = next;
+    return l;
+}
+
 // The one walk over a file's lines that both checks the markers and writes a
 // version of the text: block i is replaced by its student lines when
 // `replace(i)`, else kept as written.
-std::string rewrite_blocks(const std::string& text, const std::string& path,
-                           const std::function<bool(size_t)>& replace,
-                           std::vector<SolutionBlock>* blocks) {
-    std::string out;
-    out.reserve(text.size());
-    SolutionBlock open;
-    size_t index = 0;
-    int line_no = 0;
-    for (size_t pos = 0; pos < text.size();) {
-        size_t nl = text.find('\n', pos);
-        size_t next = nl == std::string::npos ? text.size() : nl + 1;
-        std::string_view line(text.data() + pos, next - pos);
-        // The line without its ending ("\n", "\r\n" or none at the end of the file).
-        std::string_view body =
-            line.substr(0, nl == std::string::npos ? line.size() : line.size() - 1);
-        if (!body.empty() && body.back() == '\r') body.remove_suffix(1);
-        std::string_view ending = line.substr(body.size());
-        pos = next;
-        ++line_no;
+class BlockWalk {
+public:
+    BlockWalk(const std::string& path, const std::function<bool(size_t)>& replace,
+              std::vector<SolutionBlock>* blocks)
+        : path_(path), replace_(replace), blocks_(blocks) {}
 
-        std::string where = path + ":" + std::to_string(line_no);
-        LineKind kind = classify(body, where);
-        bool inside = open.begin_line != 0;
-        bool cut = inside && replace(index);
+    void add(const TextLine& l) {
+        ++line_no_;
+        const std::string where = path_ + ":" + std::to_string(line_no_);
+        const LineKind kind = classify(l.body, where);
+        const bool inside = open_.begin_line != 0;
+        const bool cut = inside && replace_(index_);
         switch (kind) {
             case LineKind::begin:
                 if (inside)
                     throw fw::Error(
                         where + ": BEGIN SOLUTION inside the block opened at line " +
-                        std::to_string(open.begin_line) +
+                        std::to_string(open_.begin_line) +
                         "; blocks do not nest: close that one first with `// END SOLUTION`");
-                open.begin_line = line_no;
-                if (!replace(index)) out += line;
+                open_.begin_line = line_no_;
+                if (!replace_(index_)) out_ += l.whole;
                 break;
             case LineKind::end:
                 if (!inside)
                     throw fw::Error(where +
                                     ": END SOLUTION without a BEGIN SOLUTION above it; "
                                     "add `// BEGIN SOLUTION` where the block starts");
-                open.end_line = line_no;
-                if (blocks) blocks->push_back(open);
-                if (!cut) out += line;
-                open = SolutionBlock{};
-                ++index;
+                close(line_no_);
+                if (!cut) out_ += l.whole;
                 break;
             case LineKind::student:
                 if (!inside)
                     throw fw::Error(where +
                                     ": STUDENT line outside a solution block; put it between "
                                     "`// BEGIN SOLUTION` and `// END SOLUTION`");
-                if (cut)
-                    out += student_line(body) + std::string(ending);
-                else
-                    out += line;
+                out_ += cut ? student_line(l.body) + std::string(l.ending) : std::string(l.whole);
                 break;
             case LineKind::code:
-                if (!cut) out += line;
+                if (!cut) out_ += l.whole;
                 break;
         }
     }
-    if (open.begin_line != 0)
-        throw fw::Error(path + ":" + std::to_string(open.begin_line) +
-                        ": BEGIN SOLUTION without an END SOLUTION before the end of the file; "
-                        "add `// END SOLUTION` where the block ends");
-    return out;
+
+    // The text as rewritten, once every line is added.
+    std::string finish() {
+        if (open_.begin_line != 0)
+            throw fw::Error(path_ + ":" + std::to_string(open_.begin_line) +
+                            ": BEGIN SOLUTION without an END SOLUTION before the end of the "
+                            "file; add `// END SOLUTION` where the block ends");
+        return std::move(out_);
+    }
+
+private:
+    void close(int end_line) {
+        open_.end_line = end_line;
+        if (blocks_) blocks_->push_back(open_);
+        open_ = SolutionBlock{};
+        ++index_;
+    }
+
+    const std::string& path_;
+    const std::function<bool(size_t)>& replace_;
+    std::vector<SolutionBlock>* blocks_;
+    std::string out_;
+    SolutionBlock open_;  // begin_line 0: outside a block
+    size_t index_ = 0;    // of the block open or next
+    int line_no_ = 0;
+};
+
+std::string rewrite_blocks(const std::string& text, const std::string& path,
+                           const std::function<bool(size_t)>& replace,
+                           std::vector<SolutionBlock>* blocks) {
+    BlockWalk walk(path, replace, blocks);
+    for (size_t pos = 0; pos < text.size();) walk.add(take_line(text, pos));
+    return walk.finish();
 }
 
 // --- checkpoints files: just enough of a JSON scanner to find where each
@@ -201,6 +230,56 @@ size_t with_comments_above(const std::string& text, size_t begin) {
     return line;
 }
 
+// The token that opens the "checkpoints" array: a key at depth 1 of the
+// top-level object.
+size_t checkpoints_array(const std::vector<Token>& t, const std::string& text,
+                         const std::string& path) {
+    for (size_t i = 0, depth = 0; i + 2 < t.size(); ++i) {
+        const char k = t[i].kind;
+        if (k == '{' || k == '[') ++depth;
+        if ((k == '}' || k == ']') && depth > 0) --depth;
+        if (depth == 1 && k == 's' && text.compare(t[i].begin, 13, "\"checkpoints\"") == 0 &&
+            t[i].end - t[i].begin == 13 && t[i + 1].kind == ':' && t[i + 2].kind == '[')
+            return i + 2;
+    }
+    throw fw::Error(path + ": expected an object with a \"checkpoints\" array");
+}
+
+// Each entry of the array opened at token `open`, as [first token, last
+// token] at depth 0 of the array.
+std::vector<std::pair<size_t, size_t>> array_entries(const std::vector<Token>& t, size_t open,
+                                                     const std::string& path) {
+    std::vector<std::pair<size_t, size_t>> entries;
+    size_t first = 0, depth = 0;
+    for (size_t i = open + 1; i < t.size(); ++i) {
+        const char k = t[i].kind;
+        if (depth == 0 && (k == ',' || k == ']')) {
+            if (first) entries.push_back({first, i - 1});
+            first = 0;
+            if (k == ']') return entries;
+            continue;
+        }
+        if (depth == 0 && !first) first = i;
+        if (k == '{' || k == '[') ++depth;
+        if (k == '}' || k == ']') --depth;
+    }
+    throw fw::Error(path + ": the \"checkpoints\" array is not closed");
+}
+
+// The text with only the entries `kept` (indices into starts/ends, which
+// span every entry), each with the separator (comma, comments) that followed
+// it; the last one with what followed the array's last entry.
+std::string kept_entries(const std::string& text, const std::vector<size_t>& starts,
+                         const std::vector<size_t>& ends, const std::vector<size_t>& kept) {
+    std::string out = text.substr(0, starts.front());
+    for (size_t j = 0; j < kept.size(); ++j) {
+        const size_t e = kept[j];
+        out += text.substr(starts[e], ends[e] - starts[e]);
+        if (j + 1 < kept.size()) out += text.substr(ends[e], starts[e + 1] - ends[e]);
+    }
+    return out + text.substr(ends.back());
+}
+
 nlohmann::json parse_json(const std::string& text, const std::string& path) {
     try {
         return nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
@@ -236,50 +315,21 @@ std::string student_text_of_block(const std::string& text, const std::string& pa
 
 VisibleCheckpoints drop_hidden_checkpoints(const std::string& text, const std::string& path) {
     const nlohmann::json doc = parse_json(text, path);
-    std::vector<Token> t = json_tokens(text, path);
-    // The "checkpoints" array: a key at depth 1 of the top-level object.
-    size_t open = 0;
-    for (size_t i = 0, depth = 0; i + 2 < t.size() && !open; ++i) {
-        char k = t[i].kind;
-        if (k == '{' || k == '[') ++depth;
-        if ((k == '}' || k == ']') && depth > 0) --depth;
-        if (depth == 1 && k == 's' && text.compare(t[i].begin, 13, "\"checkpoints\"") == 0 &&
-            t[i].end - t[i].begin == 13 && t[i + 1].kind == ':' && t[i + 2].kind == '[')
-            open = i + 2;
-    }
-    if (!open) throw fw::Error(path + ": expected an object with a \"checkpoints\" array");
-
-    // Each entry as [first token, last token] at depth 0 of the array.
-    std::vector<std::pair<size_t, size_t>> entries;
-    size_t first = 0, depth = 0, close = 0;
-    for (size_t i = open + 1; i < t.size() && !close; ++i) {
-        char k = t[i].kind;
-        if (depth == 0 && (k == ',' || k == ']')) {
-            if (first) entries.push_back({first, i - 1});
-            first = 0;
-            if (k == ']') close = i;
-            continue;
-        }
-        if (depth == 0 && !first) first = i;
-        if (k == '{' || k == '[') ++depth;
-        if (k == '}' || k == ']') --depth;
-    }
-    if (!close) throw fw::Error(path + ": the \"checkpoints\" array is not closed");
-
+    const std::vector<Token> t = json_tokens(text, path);
     VisibleCheckpoints result;
     std::vector<size_t> kept;
     std::vector<size_t> starts, ends;
     nlohmann::json expected = doc;
     expected["checkpoints"] = nlohmann::json::array();
-    for (size_t e = 0; e < entries.size(); ++e) {
-        size_t b = t[entries[e].first].begin, end = t[entries[e].second].end;
+    for (const auto& [first, last] : array_entries(t, checkpoints_array(t, text, path), path)) {
+        const size_t b = t[first].begin, end = t[last].end;
         nlohmann::json entry = parse_json(text.substr(b, end - b), path);
         starts.push_back(with_comments_above(text, b));
         ends.push_back(end);
         if (entry.is_object() && entry.value("visibility", std::string("visible")) == "hidden") {
             result.dropped.push_back(entry.value("name", std::string("(unnamed)")));
         } else {
-            kept.push_back(e);
+            kept.push_back(starts.size() - 1);
             expected["checkpoints"].push_back(entry);
         }
     }
@@ -287,16 +337,7 @@ VisibleCheckpoints drop_hidden_checkpoints(const std::string& text, const std::s
         result.text = text;
         return result;
     }
-    // Kept entries, each with the separator (comma, comments) that followed
-    // it; the last one with what followed the array's last entry.
-    result.text = text.substr(0, starts.front());
-    for (size_t j = 0; j < kept.size(); ++j) {
-        size_t e = kept[j];
-        result.text += text.substr(starts[e], ends[e] - starts[e]);
-        if (j + 1 < kept.size()) result.text += text.substr(ends[e], starts[e + 1] - ends[e]);
-    }
-    result.text += text.substr(ends.back());
-
+    result.text = kept_entries(text, starts, ends, kept);
     if (parse_json(result.text, path + " (without its hidden checkpoints)") != expected)
         throw fw::Error(path +
                         ": cutting the hidden checkpoints out of the text did not leave "

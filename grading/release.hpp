@@ -70,6 +70,19 @@ std::vector<std::string> project_files(const std::string& source);
 // A project file's whole text; throws fw::Error naming it when unreadable.
 std::string read_file(const std::filesystem::path& path);
 
+// Throws fw::UsageError unless `dir` does not exist or is an empty directory:
+// `course release` and `course gradescope` write only into a new folder.
+void require_new_output_dir(const std::filesystem::path& dir);
+
+// Copies `from` to `to`, making `to`'s folders: a link as a link, a file with
+// its mode. Throws fw::Error naming the paths.
+void copy_entry(const std::filesystem::path& from, const std::filesystem::path& to);
+
+// Writes `text` to `path` with `mode`, making its folders. Throws fw::Error
+// naming the path.
+void write_file(const std::filesystem::path& path, const std::string& text,
+                std::filesystem::perms mode);
+
 // Writes the student version of `source` into `out` (which must not exist or
 // be empty), keeping file modes. Every file is transformed and checked before
 // anything is written: a marker error leaves `out` untouched.

@@ -12,6 +12,7 @@
 
 #include "framework/checkpoints.hpp"
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/commands.hpp"
 #include "grading/release.hpp"
 
@@ -21,12 +22,6 @@ namespace grading {
 
 namespace {
 
-std::string shell_quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
 // A file the release writes: its text when transformed, else copied as is.
 struct Planned {
     std::string rel;
@@ -34,7 +29,110 @@ struct Planned {
     std::string text;
 };
 
+// A release read and checked, before anything is written.
+struct ReleasePlan {
+    std::vector<Planned> files;
+    std::map<std::string, std::set<std::string>> hidden;  // labs/NN_name -> hidden names
+};
+
+// How the file `rel` goes into the release; what it changes goes into
+// `plan.hidden` and `summary`. Throws fw::Error for a marker or data error.
+Planned plan_file(const fs::path& root, const std::string& rel, ReleasePlan& plan,
+                  ReleaseSummary& summary) {
+    const fs::path src = root / rel, r(rel);
+    Planned p;
+    p.rel = rel;
+    if (fs::is_regular_file(fs::symlink_status(src)) && is_marked_source(rel)) {
+        const std::string text = read_file(src);
+        const size_t blocks = solution_blocks(text, rel).size();
+        if (blocks > 0) {
+            p.transformed = true;
+            p.text = student_text(text, rel);
+            summary.blocks.push_back({rel, static_cast<int>(blocks)});
+        }
+    } else if (r.filename() == "checkpoints.json" && r.parent_path().parent_path() == "labs") {
+        // Its structure first, with the framework's messages.
+        fw::read_checkpoint_file(src.string());
+        VisibleCheckpoints v = drop_hidden_checkpoints(read_file(src), rel);
+        if (!v.dropped.empty()) {
+            p.transformed = true;
+            p.text = v.text;
+            plan.hidden[r.parent_path().string()].insert(v.dropped.begin(), v.dropped.end());
+            summary.hidden.push_back({rel, v.dropped});
+        }
+    }
+    return p;
+}
+
+// Pass 1: reads, transforms and checks every file; nothing is written yet.
+ReleasePlan plan_release(const fs::path& root, ReleaseSummary& summary) {
+    ReleasePlan plan;
+    std::string errors;
+    for (const std::string& rel : project_files(root.string())) {
+        if (!fs::exists(fs::symlink_status(root / rel))) {
+            summary.missing.push_back(rel);
+            continue;
+        }
+        try {
+            plan.files.push_back(plan_file(root, rel, plan, summary));
+        } catch (const fw::Error& e) {
+            errors += std::string("\n  ") + e.what();
+        }
+    }
+    if (!errors.empty()) throw fw::Error("the release was not written: fix these first:" + errors);
+    return plan;
+}
+
+// Whether `rel` is the reference image of a hidden checkpoint.
+bool is_hidden_reference(const ReleasePlan& plan, const std::string& rel) {
+    const fs::path r(rel);
+    const auto lab = plan.hidden.find(r.parent_path().parent_path().string());
+    return r.parent_path().filename() == "reference" && lab != plan.hidden.end() &&
+           lab->second.count(r.stem().string());
+}
+
+void create_parent(const fs::path& path) {
+    std::error_code ec;
+    fs::create_directories(path.parent_path(), ec);
+    if (ec)
+        throw fw::Error("cannot create directory '" + path.parent_path().string() +
+                        "': " + ec.message());
+}
+
 }  // namespace
+
+void require_new_output_dir(const fs::path& dir) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && (!fs::is_directory(dir, ec) || !fs::is_empty(dir, ec)))
+        throw fw::UsageError("output directory '" + dir.string() + "' " +
+                             (fs::is_directory(dir, ec) ? "is not empty" : "is not a directory") +
+                             "; give a new directory or empty this one");
+}
+
+void copy_entry(const fs::path& from, const fs::path& to) {
+    create_parent(to);
+    std::error_code ec;
+    if (fs::is_symlink(from))
+        fs::copy_symlink(from, to, ec);
+    else
+        fs::copy_file(from, to, ec);
+    if (ec)
+        throw fw::Error("cannot copy '" + from.string() + "' to '" + to.string() +
+                        "': " + ec.message());
+    if (!fs::is_symlink(from)) fs::permissions(to, fs::status(from).permissions(), ec);
+    if (ec) throw fw::Error("cannot set the mode of '" + to.string() + "': " + ec.message());
+}
+
+void write_file(const fs::path& path, const std::string& text, fs::perms mode) {
+    create_parent(path);
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out.flush())
+        throw fw::Error("cannot write '" + path.string() + "': check the disk and permissions");
+    std::error_code ec;
+    fs::permissions(path, mode, ec);
+    if (ec) throw fw::Error("cannot set the mode of '" + path.string() + "': " + ec.message());
+}
 
 std::string read_file(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -55,8 +153,8 @@ std::vector<std::string> project_files(const std::string& source) {
     // Untracked files count too: a release from a working tree holds what a
     // build of that tree compiles (a new lab not yet committed included).
     if (fs::exists(root / ".git")) {
-        std::string command =
-            "git -C " + shell_quote(source) + " ls-files -z --cached --others --exclude-standard";
+        std::string command = "git -C " + fw::shell_quote(source) +
+                              " ls-files -z --cached --others --exclude-standard";
         FILE* p = popen(command.c_str(), "r");
         if (!p) throw fw::Error("cannot run '" + command + "': is git installed?");
         std::string listing;
@@ -91,89 +189,25 @@ std::vector<std::string> project_files(const std::string& source) {
 }
 
 ReleaseSummary release_tree(const std::string& source, const std::string& out) {
-    fs::path root(source), dest(out);
-    std::error_code ec;
-    if (fs::exists(dest, ec) && (!fs::is_directory(dest, ec) || !fs::is_empty(dest, ec)))
-        throw fw::Error("output directory '" + out + "' " +
-                        (fs::is_directory(dest, ec) ? "is not empty" : "is not a directory") +
-                        "; give a new directory or empty this one");
-
+    const fs::path root(source), dest(out);
+    require_new_output_dir(dest);
     ReleaseSummary summary;
-    std::vector<std::string> files = project_files(source);
-    // Pass 1: read, transform and check everything; nothing is written yet.
-    std::map<std::string, std::set<std::string>> hidden;  // labs/NN_name -> hidden names
-    std::vector<Planned> plan;
-    std::string errors;
-    for (const std::string& rel : files) {
-        fs::path src = root / rel;
-        if (!fs::exists(fs::symlink_status(src))) {
-            summary.missing.push_back(rel);
-            continue;
-        }
-        Planned p;
-        p.rel = rel;
-        fs::path r(rel);
-        bool is_checkpoints =
-            r.filename() == "checkpoints.json" && r.parent_path().parent_path() == "labs";
-        try {
-            if (fs::is_regular_file(fs::symlink_status(src)) && is_marked_source(rel)) {
-                std::string text = read_file(src);
-                size_t blocks = solution_blocks(text, rel).size();
-                if (blocks > 0) {
-                    p.transformed = true;
-                    p.text = student_text(text, rel);
-                    summary.blocks.push_back({rel, static_cast<int>(blocks)});
-                }
-            } else if (is_checkpoints) {
-                fw::read_checkpoint_file(
-                    src.string());  // its structure, with the framework's messages
-                VisibleCheckpoints v = drop_hidden_checkpoints(read_file(src), rel);
-                if (!v.dropped.empty()) {
-                    p.transformed = true;
-                    p.text = v.text;
-                    hidden[r.parent_path().string()].insert(v.dropped.begin(), v.dropped.end());
-                    summary.hidden.push_back({rel, v.dropped});
-                }
-            }
-        } catch (const fw::Error& e) {
-            errors += std::string("\n  ") + e.what();
-            continue;
-        }
-        plan.push_back(std::move(p));
-    }
-    if (!errors.empty()) throw fw::Error("the release was not written: fix these first:" + errors);
+    const ReleasePlan plan = plan_release(root, summary);
 
     // Pass 2: write, leaving out the hidden checkpoints' references.
+    std::error_code ec;
     fs::create_directories(dest, ec);
     if (ec) throw fw::Error("cannot create output directory '" + out + "': " + ec.message());
-    for (const Planned& p : plan) {
-        fs::path r(p.rel), src = root / p.rel, dst = dest / p.rel;
-        auto lab = hidden.find(r.parent_path().parent_path().string());
-        if (r.parent_path().filename() == "reference" && lab != hidden.end() &&
-            lab->second.count(r.stem().string())) {
+    for (const Planned& p : plan.files) {
+        if (is_hidden_reference(plan, p.rel)) {
             summary.references_left_out.push_back(p.rel);
             continue;
         }
-        fs::create_directories(dst.parent_path(), ec);
-        if (ec)
-            throw fw::Error("cannot create directory '" + dst.parent_path().string() +
-                            "': " + ec.message());
-        if (fs::is_symlink(src)) {
-            fs::copy_symlink(src, dst, ec);
-        } else if (p.transformed) {
-            std::ofstream f(dst, std::ios::binary);
-            f << p.text;
-            if (!f.flush())
-                throw fw::Error("cannot write '" + dst.string() +
-                                "': check the disk and permissions");
-        } else {
-            fs::copy_file(src, dst, ec);
-        }
-        if (ec)
-            throw fw::Error("cannot copy '" + src.string() + "' to '" + dst.string() +
-                            "': " + ec.message());
-        if (!fs::is_symlink(src)) fs::permissions(dst, fs::status(src).permissions(), ec);
-        if (ec) throw fw::Error("cannot set the mode of '" + dst.string() + "': " + ec.message());
+        const fs::path src = root / p.rel;
+        if (p.transformed && !fs::is_symlink(src))
+            write_file(dest / p.rel, p.text, fs::status(src).permissions());
+        else
+            copy_entry(src, dest / p.rel);
         ++summary.files;
     }
     return summary;
@@ -190,8 +224,7 @@ int release_command(const std::string& out_dir) {
         blocks += n;
     }
     for (const auto& [file, names] : s.hidden) {
-        std::string list;
-        for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+        const std::string list = fw::join(names, ", ");
         std::printf("  %-48s %zu hidden checkpoint%s dropped: %s\n", file.c_str(), names.size(),
                     names.size() == 1 ? "" : "s", list.c_str());
         checkpoints += names.size();

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/report_text.hpp"
 
 namespace grading {
@@ -299,11 +300,12 @@ std::string summary_table(const GradeRun& run) {
     const std::array<bool, 5> right{false, true, true, false, true};
     std::string table;
     for (const auto& row : rows) {
-        std::string line;
+        std::array<std::string, 5> cells;
         for (size_t i = 0; i < row.size(); ++i) {
             const std::string pad(width[i] - row[i].size(), ' ');
-            line += (i ? "  " : "") + (right[i] ? pad + row[i] : row[i] + pad);
+            cells[i] = right[i] ? pad + row[i] : row[i] + pad;
         }
+        const std::string line = fw::join(cells, "  ");
         table += line.substr(0, line.find_last_not_of(' ') + 1) + "\n";
     }
     if (run.labs.empty()) table += "(no labs were graded)\n";

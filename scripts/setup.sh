@@ -16,6 +16,8 @@ packages=(
   libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   libglfw3-dev libimgui-dev xvfb xauth
   libglm-dev libstb-dev doctest-dev nlohmann-json3-dev libcli11-dev
+  # The format test (scripts/check-format.sh); any version from Debian 12's 14 on.
+  clang-format
 )
 
 missing=()

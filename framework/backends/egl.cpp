@@ -131,44 +131,8 @@ public:
     // loads GL. Throws EnvironmentError naming the EGL call that failed.
     void set_up(const std::string& where, EGLint egl_major, EGLint egl_minor) {
         const char* exts = eglQueryString(display_, EGL_EXTENSIONS);
-        if (!has_extension(exts, "EGL_KHR_surfaceless_context")) {
-            throw EnvironmentError(where +
-                                   " lacks EGL_KHR_surfaceless_context (a context "
-                                   "without a surface); " +
-                                   install_hint());
-        }
-        // EGL 1.5 has the version and profile attributes built in; 1.4 needs the extension.
-        const bool egl15 = egl_major > 1 || (egl_major == 1 && egl_minor >= 5);
-        if (!egl15 && !has_extension(exts, "EGL_KHR_create_context")) {
-            throw EnvironmentError(where + " has EGL " + std::to_string(egl_major) + "." +
-                                   std::to_string(egl_minor) +
-                                   " without EGL_KHR_create_context, so it cannot ask for GL "
-                                   "4.3 core; " +
-                                   install_hint());
-        }
-        if (!eglBindAPI(EGL_OPENGL_API)) {
-            throw EnvironmentError(egl_failure("eglBindAPI(EGL_OPENGL_API)", where) +
-                                   " (this EGL has no desktop OpenGL); " + install_hint());
-        }
-
-        EGLConfig config = EGL_NO_CONFIG_KHR;
-        if (!has_extension(exts, "EGL_KHR_no_config_context") &&
-            !has_extension(exts, "EGL_MESA_configless_context")) {
-            // Any OpenGL-capable config will do: we never draw to an EGL surface.
-            // EGL_SURFACE_TYPE 0 lifts the default requirement of EGL_WINDOW_BIT.
-            const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
-                                             0, EGL_NONE};
-            EGLint count = 0;
-            if (!eglChooseConfig(display_, config_attribs, &config, 1, &count)) {
-                throw EnvironmentError(egl_failure("eglChooseConfig(EGL_OPENGL_BIT)", where) +
-                                       "; " + install_hint());
-            }
-            if (count == 0) {
-                throw EnvironmentError(where + " has no EGL config with EGL_OPENGL_BIT; " +
-                                       install_hint());
-            }
-        }
-
+        check_can_make_context(exts, where, egl_major, egl_minor);
+        const EGLConfig config = choose_config(exts, where);
         // Core profile, and no forward-compatible flag (LABS.md conventions).
         // clang-format off
         const EGLint context_attribs[] = {
@@ -192,6 +156,53 @@ public:
     }
 
 private:
+    // What a GL 4.3 core context without a surface needs of the display (its
+    // extensions `exts`), and desktop OpenGL bound as the API.
+    static void check_can_make_context(const char* exts, const std::string& where, EGLint egl_major,
+                                       EGLint egl_minor) {
+        if (!has_extension(exts, "EGL_KHR_surfaceless_context")) {
+            throw EnvironmentError(where +
+                                   " lacks EGL_KHR_surfaceless_context (a context "
+                                   "without a surface); " +
+                                   install_hint());
+        }
+        // EGL 1.5 has the version and profile attributes built in; 1.4 needs the extension.
+        const bool egl15 = egl_major > 1 || (egl_major == 1 && egl_minor >= 5);
+        if (!egl15 && !has_extension(exts, "EGL_KHR_create_context")) {
+            throw EnvironmentError(where + " has EGL " + std::to_string(egl_major) + "." +
+                                   std::to_string(egl_minor) +
+                                   " without EGL_KHR_create_context, so it cannot ask for GL "
+                                   "4.3 core; " +
+                                   install_hint());
+        }
+        if (!eglBindAPI(EGL_OPENGL_API)) {
+            throw EnvironmentError(egl_failure("eglBindAPI(EGL_OPENGL_API)", where) +
+                                   " (this EGL has no desktop OpenGL); " + install_hint());
+        }
+    }
+
+    // EGL_NO_CONFIG_KHR where the display takes a context without a config;
+    // else any OpenGL-capable config: we never draw to an EGL surface.
+    EGLConfig choose_config(const char* exts, const std::string& where) const {
+        EGLConfig config = EGL_NO_CONFIG_KHR;
+        if (has_extension(exts, "EGL_KHR_no_config_context") ||
+            has_extension(exts, "EGL_MESA_configless_context"))
+            return config;
+        // EGL_SURFACE_TYPE 0 lifts the default requirement of EGL_WINDOW_BIT.
+        const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0,
+                                         EGL_NONE};
+        EGLint count = 0;
+        if (!eglChooseConfig(display_, config_attribs, &config, 1, &count)) {
+            throw EnvironmentError(egl_failure("eglChooseConfig(EGL_OPENGL_BIT)", where) + "; " +
+                                   install_hint());
+        }
+        if (count == 0) {
+            throw EnvironmentError(where + " has no EGL config with EGL_OPENGL_BIT; " +
+                                   install_hint());
+        }
+        return config;
+    }
+
     EGLDisplay display_;
     EGLContext context_ = EGL_NO_CONTEXT;
 };

@@ -1,45 +1,21 @@
 #include "framework/gl/buffer.hpp"
 
+#include "framework/gl/binding.hpp"
 #include "framework/gl/debug.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
-namespace {
-
-// Binds `id` to `target` for the lifetime of the scope, then restores what
-// was bound before, so that creating or reading a buffer changes no state the
-// caller can see.
-class ScopedBufferBinding {
-public:
-    ScopedBufferBinding(GLenum target, GLenum binding, GLuint id) : target_(target) {
-        glGetIntegerv(binding, &previous_);
-        glBindBuffer(target_, id);
-    }
-    ~ScopedBufferBinding() { glBindBuffer(target_, static_cast<GLuint>(previous_)); }
-    ScopedBufferBinding(const ScopedBufferBinding&) = delete;
-    ScopedBufferBinding& operator=(const ScopedBufferBinding&) = delete;
-
-private:
-    GLenum target_;
-    GLint previous_ = 0;
-};
-
-std::string quoted(const std::string& label) {
-    return label.empty() ? std::string("(unlabelled)") : "'" + label + "'";
-}
-
-}  // namespace
-
 Buffer::Buffer(const BufferDesc& desc) : target_(desc.target), label_(desc.label) {
     if (desc.size == 0)
-        throw UsageError("BufferDesc.size must be greater than zero (label " + quoted(label_) +
-                         ")");
+        throw UsageError("BufferDesc.size must be greater than zero (label " +
+                         quoted_label(label_) + ")");
     GLuint id = 0;
     glGenBuffers(1, &id);
     handle_ = detail::Handle(id, [](GLuint name) { glDeleteBuffers(1, &name); });
     // A name from glGenBuffers becomes a buffer object when first bound, to
     // any target; its target does not stick to it.
-    ScopedBufferBinding bind(GL_COPY_WRITE_BUFFER, GL_COPY_WRITE_BUFFER_BINDING, id);
+    ScopedBinding bind = bind_buffer_scoped(GL_COPY_WRITE_BUFFER, id);
     glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(desc.size), desc.data, desc.usage);
     size_ = desc.size;
     set_object_label(GL_BUFFER, id, label_);
@@ -54,7 +30,7 @@ void Buffer::check_range(const char* what, std::size_t offset, std::size_t bytes
         throw UsageError(std::string("Buffer::") + what +
                          " on an empty Buffer (default-constructed or moved from)");
     if (offset > size_ || bytes > size_ - offset)
-        throw UsageError("Buffer " + quoted(label_) + ": " + what + " of bytes [" +
+        throw UsageError("Buffer " + quoted_label(label_) + ": " + what + " of bytes [" +
                          std::to_string(offset) + ", " + std::to_string(offset + bytes) +
                          ") is outside its " + std::to_string(size_) + " bytes");
 }
@@ -62,7 +38,7 @@ void Buffer::check_range(const char* what, std::size_t offset, std::size_t bytes
 void Buffer::update(std::size_t offset, const void* data, std::size_t bytes) {
     check_range("update", offset, bytes);
     if (bytes == 0) return;
-    ScopedBufferBinding bind(GL_COPY_WRITE_BUFFER, GL_COPY_WRITE_BUFFER_BINDING, id());
+    ScopedBinding bind = bind_buffer_scoped(GL_COPY_WRITE_BUFFER, id());
     glBufferSubData(GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset),
                     static_cast<GLsizeiptr>(bytes), data);
 }
@@ -72,7 +48,7 @@ std::vector<std::uint8_t> Buffer::read(std::size_t offset, std::size_t bytes) co
     check_range("read", offset, bytes);
     std::vector<std::uint8_t> out(bytes);
     if (bytes == 0) return out;
-    ScopedBufferBinding bind(GL_COPY_READ_BUFFER, GL_COPY_READ_BUFFER_BINDING, id());
+    ScopedBinding bind = bind_buffer_scoped(GL_COPY_READ_BUFFER, id());
     glGetBufferSubData(GL_COPY_READ_BUFFER, static_cast<GLintptr>(offset),
                        static_cast<GLsizeiptr>(bytes), out.data());
     return out;

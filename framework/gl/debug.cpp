@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
@@ -60,19 +61,19 @@ std::vector<std::string> take_debug_messages() {
 }
 
 void check_gl(const char* where) {
-    std::string codes;
+    std::vector<GLenum> codes;
     // glGetError returns one recorded flag per call; several may be set.
     for (int i = 0; i < 16; ++i) {
         GLenum e = glGetError();
         if (e == GL_NO_ERROR) break;
-        codes += (codes.empty() ? "" : ", ") + gl_enum_name(e);
+        codes.push_back(e);
     }
     std::vector<std::string> messages = take_debug_messages();
     if (codes.empty() && messages.empty()) return;
 
     std::string text = "GL error after " + std::string(where) + ": ";
-    text += codes.empty() ? "debug message" : codes;
-    for (std::size_t i = 0; i < messages.size(); ++i) text += (i == 0 ? ": " : "; ") + messages[i];
+    text += codes.empty() ? "debug message" : join(codes, ", ", gl_enum_name);
+    if (!messages.empty()) text += ": " + join(messages, "; ");
     text += " [" + bound_label(GL_CURRENT_PROGRAM, GL_PROGRAM, "program") + ", " +
             bound_label(GL_VERTEX_ARRAY_BINDING, GL_VERTEX_ARRAY, "vertex array") + ", " +
             bound_label(GL_DRAW_FRAMEBUFFER_BINDING, GL_FRAMEBUFFER, "framebuffer") + "]";

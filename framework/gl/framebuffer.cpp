@@ -1,6 +1,7 @@
 #include "framework/gl/framebuffer.hpp"
 
 #include "framework/error.hpp"
+#include "framework/gl/binding.hpp"
 #include "framework/gl/debug.hpp"
 
 namespace fw {
@@ -56,14 +57,15 @@ Framebuffer::Framebuffer(const FramebufferDesc& desc)
     GLuint id = 0;
     glGenFramebuffers(1, &id);
     handle_ = detail::Handle(id, [](GLuint n) { glDeleteFramebuffers(1, &n); });
-    GLint previous = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, id);
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(),
-                           0);
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
-    const GLenum status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previous));
+    GLenum status = GL_NONE;
+    {
+        ScopedBinding bind = bind_framebuffer_scoped(GL_DRAW_FRAMEBUFFER, id);
+        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                               color_.id(), 0);
+        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(),
+                               0);
+        status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
+    }
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw Error("framebuffer '" + label_ + "' is incomplete: " + gl_enum_name(status) +
                     " (RGBA8 colour + DEPTH_COMPONENT32F depth, " + std::to_string(width_) + "x" +
@@ -78,21 +80,14 @@ void Framebuffer::bind() const {
 
 void Framebuffer::read_pixels(GLenum format, GLenum type, void* out) const {
     if (id() == 0) throw UsageError("Framebuffer: read from an empty Framebuffer");
-    GLint previous_read = 0, previous_pack = 0, previous_alignment = 4;
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous_read);
-    glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &previous_pack);
-    glGetIntegerv(GL_PACK_ALIGNMENT, &previous_alignment);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, id());
+    ScopedBinding read = bind_framebuffer_scoped(GL_READ_FRAMEBUFFER, id());
     // With a pixel pack buffer bound, glReadPixels would write into it and
     // treat `out` as an offset.
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    ScopedBinding pack_buffer = bind_buffer_scoped(GL_PIXEL_PACK_BUFFER, 0);
+    ScopedBinding alignment = pixel_store_scoped(GL_PACK_ALIGNMENT, 1);
     // glReadPixels returns rows from window y = 0 (the bottom) upwards, the
     // order fw::Image stores.
     glReadPixels(0, 0, width_, height_, format, type, out);
-    glPixelStorei(GL_PACK_ALIGNMENT, previous_alignment);
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, static_cast<GLuint>(previous_pack));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous_read));
 }
 
 Image Framebuffer::read_color() const {

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "framework/gl/debug.hpp"
 
 namespace fw {
@@ -108,9 +109,7 @@ void Program::use() const { glUseProgram(id()); }
 // The files as paths from the source tree ("shaders/00_pipeline/basic.vert"),
 // which a student can open from the repository root.
 std::string Program::files_text() const {
-    std::string out;
-    for (const auto& source : sources_) out += (out.empty() ? "" : ", ") + source.first;
-    return out;
+    return join(sources_, ", ", [](const auto& source) { return source.first; });
 }
 
 void Program::load_uniforms() {
@@ -167,16 +166,15 @@ std::string Program::describe_uniforms() const {
     std::map<std::string, const UniformInfo*> sorted;  // by name, as messages list them
     for (const auto& [key, info] : uniforms_)
         if (key == info.name) sorted[key] = &info;  // aliases: "u_w" and "u_w[2]" for "u_w[0]"
-    std::string out;
-    for (const auto& [key, info] : sorted) {
-        out += (out.empty() ? "" : ", ") + key + ": " + glsl_type_name(info->type);
-        if (info->is_array) out += "[" + std::to_string(info->array_size) + "]";
-    }
+    const std::string out = join(sorted, ", ", [](const auto& entry) {
+        const UniformInfo& info = *entry.second;
+        return entry.first + ": " + glsl_type_name(info.type) +
+               (info.is_array ? "[" + std::to_string(info.array_size) + "]" : std::string());
+    });
     return out.empty() ? "(none)" : out;
 }
 
-void Program::throw_unknown(const std::string& name) const {
-    if (id() == 0) throw UsageError("Program::set('" + name + "') on an empty Program");
+std::string Program::file_declaring(const std::string& name) const {
     // The identifier at the front: "u_lights" of "u_lights[1].color".
     std::size_t end = 0;
     while (end < name.size() && is_identifier_char(name[end])) ++end;
@@ -184,6 +182,19 @@ void Program::throw_unknown(const std::string& name) const {
     std::string found_in;
     for (const auto& [file, source] : sources_)
         if (!word.empty() && contains_word(source, word)) found_in = file;
+    return found_in;
+}
+
+void Program::require_declared(const std::string& name) const {
+    if (id() == 0 || file_declaring(name).empty()) throw_unknown(name);
+}
+
+void Program::throw_unknown(const std::string& name) const {
+    if (id() == 0) throw UsageError("Program::set('" + name + "') on an empty Program");
+    std::size_t end = 0;
+    while (end < name.size() && is_identifier_char(name[end])) ++end;
+    const std::string word = name.substr(0, end);
+    const std::string found_in = file_declaring(name);
 
     std::string text = "program '" + label_ + "' has no active uniform '" + name + "'";
     if (!found_in.empty())

@@ -1,7 +1,7 @@
 // fw::Program: linked shader stages plus checked uniform setters.
 //
-//   auto prog = fw::Program::from_files({"00_pipeline/basic.vert", "00_pipeline/basic.frag"});
-//   prog.set("u_mvp", mvp);     // throws if basic.* has no active mat4 u_mvp
+//   auto prog = fw::Program::from_files({"00_pipeline/pipeline.vert", "00_pipeline/pipeline.frag"});
+//   prog.set("u_mvp", mvp);     // throws if pipeline.* has no active mat4 u_mvp
 //   prog.use();
 //
 // Uniforms are set with glProgramUniform*, so set() works whether or not the
@@ -87,6 +87,23 @@ public:
     void set(const std::string& name, const std::vector<glm::mat3>& v) const;
     void set(const std::string& name, const std::vector<glm::mat4>& v) const;
 
+    // For a uniform that only a student's part reads. A GLSL compiler
+    // removes a uniform that does not affect the output, and only uniforms
+    // that "will actually be accessed when the executable code is executed"
+    // are active (GL 4.3, 7.6 Uniform Variables), so until the student writes
+    // the part that reads it, set() would refuse it. This sets the uniform
+    // when it is active and returns whether it did; a name that appears in
+    // none of the program's files is still an error (misspelt), as in set().
+    template <class T>
+    bool set_if_active(const std::string& name, const T& value) const {
+        if (!has_uniform(name)) {
+            require_declared(name);
+            return false;
+        }
+        set(name, value);
+        return true;
+    }
+
     bool has_uniform(const std::string& name) const;
     // nullptr if `name` is not an active uniform.
     const UniformInfo* uniform(const std::string& name) const;
@@ -99,6 +116,10 @@ private:
     // elements) and returns its location; throws fw::Error otherwise.
     GLint checked_location(const std::string& name, GLenum given, GLsizei count) const;
     [[noreturn]] void throw_unknown(const std::string& name) const;
+    // Throws throw_unknown's error unless `name` appears in a source file.
+    void require_declared(const std::string& name) const;
+    // The file whose source holds the identifier at the front of `name`; "".
+    std::string file_declaring(const std::string& name) const;
     std::string files_text() const;
     void load_uniforms();
 

@@ -1,7 +1,10 @@
 #include "framework/gl/query.hpp"
 
+#include <algorithm>
+
 #include "framework/error.hpp"
 #include "framework/gl/debug.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
@@ -24,15 +27,11 @@ constexpr TargetName kTargets[] = {
 }  // namespace
 
 Query::Query(GLenum target, std::string label) : target_(target), label_(std::move(label)) {
-    bool known = false;
-    std::string names;
-    for (const TargetName& t : kTargets) {
-        known = known || t.target == target;
-        names += std::string(names.empty() ? "" : ", ") + t.name;
-    }
-    if (!known)
+    const auto is_target = [target](const TargetName& t) { return t.target == target; };
+    if (std::none_of(std::begin(kTargets), std::end(kTargets), is_target))
         throw UsageError("Query target " + gl_enum_name(target) + " is not supported; use one of " +
-                         names + (label_.empty() ? "" : " (query '" + label_ + "')"));
+                         join(kTargets, ", ", &TargetName::name) +
+                         (label_.empty() ? "" : " (query '" + label_ + "')"));
     GLuint id = 0;
     glGenQueries(1, &id);
     handle_ = detail::Handle(id, [](GLuint n) { glDeleteQueries(1, &n); });

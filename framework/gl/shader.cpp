@@ -9,6 +9,7 @@
 
 #include "framework/error.hpp"
 #include "framework/gl/debug.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
@@ -36,6 +37,12 @@ const StageInfo& info(Stage stage) {
     return kStages[0];
 }
 
+// Included file k is numbered from line k * kIncludedLineBase + 1, and is
+// source string k: compilers that report source strings (NVIDIA) name k,
+// and those that report string 0 for all (Mesa) still give a line that
+// tells the file. A shader file longer than this is not expected.
+constexpr int kIncludedLineBase = 100000;
+
 bool ends_with(const std::string& s, const std::string& suffix) {
     return s.size() >= suffix.size() &&
            s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -57,13 +64,13 @@ GLenum gl_shader_type(Stage stage) { return info(stage).type; }
 const char* stage_name(Stage stage) { return info(stage).name; }
 
 Stage stage_from_path(const std::string& path) {
-    std::string known;
-    for (const StageInfo& s : kStages) {
+    for (const StageInfo& s : kStages)
         if (ends_with(path, s.extension)) return s.stage;
-        known += std::string(known.empty() ? "" : ", ") + s.extension + " (" + s.name + ")";
-    }
+    const auto described = [](const StageInfo& s) {
+        return std::string(s.extension) + " (" + s.name + ")";
+    };
     throw UsageError("shader '" + path + "': unknown extension; the stage comes from the " +
-                     "extension, one of " + known);
+                     "extension, one of " + join(kStages, ", ", described));
 }
 
 std::string shader_dir() {
@@ -83,40 +90,93 @@ std::string display_path(const std::string& path) {
     return path;
 }
 
-int log_line_number(const std::string& log_line) {
+int log_line_number(const std::string& log_line, int* source_string) {
     // Mesa:   "0:12(5): error: ..."    (string 0, line 12, column 5)
     // NVIDIA: "0(12) : error C1008: ..."
     // Others: "ERROR: 0:12: ..."
-    static const std::regex mesa(R"(^\s*\d+:(\d+)\(\d+\)\s*:)");
-    static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:)");
-    static const std::regex other(R"(^\s*(?:ERROR|WARNING):\s*\d+:(\d+):)");
+    static const std::regex mesa(R"(^\s*(\d+):(\d+)\(\d+\)\s*:)");
+    static const std::regex nvidia(R"(^\s*(\d+)\((\d+)\)\s*:)");
+    static const std::regex other(R"(^\s*(?:ERROR|WARNING):\s*(\d+):(\d+):)");
     std::smatch m;
     if (std::regex_search(log_line, m, mesa) || std::regex_search(log_line, m, nvidia) ||
-        std::regex_search(log_line, m, other))
-        return std::atoi(m[1].str().c_str());
+        std::regex_search(log_line, m, other)) {
+        if (source_string) *source_string = std::atoi(m[1].str().c_str());
+        return std::atoi(m[2].str().c_str());
+    }
+    if (source_string) *source_string = 0;
     return 0;
 }
 
 std::string format_compile_error(const std::string& path, Stage stage, const std::string& log,
-                                 const std::string& source) {
-    const std::vector<std::string> source_lines = split_lines(source);
-    std::string body;
-    int first_line = 0, last_quoted = 0;
+                                 const std::string& source,
+                                 const std::vector<IncludedFile>& included) {
+    std::vector<std::vector<std::string>> files{split_lines(source)};
+    std::vector<std::string> paths{path};
+    for (const IncludedFile& f : included) {
+        files.push_back(split_lines(f.text));
+        paths.push_back(f.path);
+    }
+    std::string body, where;
+    std::pair<int, int> last_quoted{-1, 0};
     for (const std::string& line : split_lines(log)) {
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
         body += "  " + line + "\n";
-        int n = log_line_number(line);
+        int string_number = 0;
+        int n = log_line_number(line, &string_number);
+        // Mesa reports every line as source string 0: included file k
+        // starts at line k * kIncludedLineBase + 1 (expand_includes).
+        if (n > kIncludedLineBase) {
+            string_number = n / kIncludedLineBase;
+            n %= kIncludedLineBase;
+        }
+        if (string_number < 0 || static_cast<std::size_t>(string_number) >= files.size()) continue;
+        const auto file = static_cast<std::size_t>(string_number);
         // Compilers often report several errors for one line; quote it once.
-        if (n >= 1 && static_cast<std::size_t>(n) <= source_lines.size() && n != last_quoted) {
-            if (first_line == 0) first_line = n;
-            last_quoted = n;
-            body += "  " + std::to_string(n) + " | " +
-                    source_lines[static_cast<std::size_t>(n) - 1] + "\n";
+        if (n >= 1 && static_cast<std::size_t>(n) <= files[file].size() &&
+            std::pair(string_number, n) != last_quoted) {
+            if (where.empty()) where = paths[file] + ":" + std::to_string(n);
+            last_quoted = {string_number, n};
+            body += "  " + (file > 0 ? paths[file] + ":" : std::string()) + std::to_string(n) +
+                    " | " + files[file][static_cast<std::size_t>(n) - 1] + "\n";
         }
     }
     if (body.empty()) body = "  (the compiler gave no log)\n";
-    std::string where = path + (first_line > 0 ? ":" + std::to_string(first_line) : "");
+    if (where.empty()) where = path;
     return where + ": " + stage_name(stage) + " shader failed to compile:\n" + body;
+}
+
+std::string expand_includes(const std::string& text, const std::string& path,
+                            std::vector<IncludedFile>& included) {
+    static const std::regex include(R"re(^\s*#\s*include\s*"([^"/]+)"\s*$)re");
+    static const std::regex any_include(R"(^\s*#\s*include\b)");
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    std::string out;
+    int number = 0;
+    for (const std::string& line : split_lines(text)) {
+        ++number;
+        std::smatch m;
+        if (!std::regex_search(line, any_include)) {
+            out += line + "\n";
+            continue;
+        }
+        const std::string where = display_path(path) + ":" + std::to_string(number) + ": ";
+        if (!std::regex_search(line, m, include))
+            throw Error(where + "expected #include \"name\" naming a file in the same folder: " +
+                        line);
+        const std::string file = (folder / m[1].str()).string();
+        std::ifstream in(file, std::ios::binary);
+        std::ostringstream content;
+        if (!std::filesystem::is_regular_file(file) || !(content << in.rdbuf()))
+            throw Error(where + "cannot read included file '" + file + "'");
+        for (const std::string& inner : split_lines(content.str()))
+            if (std::regex_search(inner, any_include))
+                throw Error(display_path(file) + ": an included file may not include another");
+        included.push_back({display_path(file), content.str()});
+        const std::size_t k = included.size();
+        out += "#line " + std::to_string(k * kIncludedLineBase + 1) + " " + std::to_string(k) +
+               "\n" + content.str() + "\n#line " + std::to_string(number + 1) + " 0\n";
+    }
+    return out;
 }
 
 Shader Shader::from_file(const std::string& path) {
@@ -130,12 +190,19 @@ Shader Shader::from_file(const std::string& path) {
                     (resolved == path ? std::string()
                                       : " ('" + path + "' in the shader directory " + shader_dir() +
                                             "; LAB_SHADER_DIR overrides it)"));
-    Shader shader = from_source(stage, text.str(), display_path(resolved));
+    std::vector<IncludedFile> included;
+    const std::string source = expand_includes(text.str(), resolved, included);
+    Shader shader = compile(stage, source, display_path(resolved), text.str(), included);
     shader.path_ = resolved;
     return shader;
 }
 
 Shader Shader::from_source(Stage stage, const std::string& source, const std::string& name) {
+    return compile(stage, source, name, source, {});
+}
+
+Shader Shader::compile(Stage stage, const std::string& source, const std::string& name,
+                       const std::string& file_text, const std::vector<IncludedFile>& included) {
     Shader shader;
     shader.stage_ = stage;
     shader.path_ = name;
@@ -158,7 +225,7 @@ Shader Shader::from_source(Stage stage, const std::string& source, const std::st
         // Mesa also reports the failure through KHR_debug; the exception
         // carries it, so the queued copy must not resurface at the next check.
         take_debug_messages();
-        throw Error(format_compile_error(name, stage, log, source));
+        throw Error(format_compile_error(name, stage, log, file_text, included));
     }
     set_object_label(GL_SHADER, id, name);
     return shader;

@@ -12,6 +12,7 @@
 #include <glad/gl.h>
 
 #include <string>
+#include <vector>
 
 #include "framework/gl/handle.hpp"
 
@@ -32,21 +33,41 @@ std::string shader_dir();
 // `relative` resolved against shader_dir(); an absolute path is returned as is.
 std::string shader_path(const std::string& relative);
 
+// A file pasted into a shader by `#include "name"` (see Shader::from_file).
+struct IncludedFile {
+    std::string path;  // as messages show it
+    std::string text;
+};
+
 // The compile error text shown above, from a raw info log. Understands
 // Mesa's "0:12(5): error: ..." and NVIDIA's "0(12) : error C1008: ..." line
 // numbers; other lines are passed through. `path` is what the message shows.
+// A log line of source string k >= 1 refers to line n of included[k - 1].
 std::string format_compile_error(const std::string& path, Stage stage, const std::string& log,
-                                 const std::string& source);
-// The source line number a log line refers to, or 0 if it names none.
-int log_line_number(const std::string& log_line);
+                                 const std::string& source,
+                                 const std::vector<IncludedFile>& included = {});
+// The source line number a log line refers to, or 0 if it names none;
+// `source_string` (if given) gets the source string number (0: the file itself).
+int log_line_number(const std::string& log_line, int* source_string = nullptr);
+
+// Replaces each line `#include "name"` of `text` (the file at `path`) by the
+// file `name` in the same folder, between #line directives that tell each
+// file's lines apart: included file k is source string k, from line
+// k * 100000 + 1; the shader's own lines keep their numbers.
+// format_compile_error maps them back. Included files may not include others. Throws fw::Error naming
+// the line and the path of a file it cannot read.
+std::string expand_includes(const std::string& text, const std::string& path,
+                            std::vector<IncludedFile>& included);
 
 class Shader {
 public:
     Shader() = default;
 
     // Reads and compiles `path` (absolute, or relative to shader_dir()); the
-    // stage comes from its extension. Throws fw::Error naming the path if
-    // the file cannot be read or does not compile.
+    // stage comes from its extension. `#include "shared.glsl"` lines paste a
+    // file from the same folder: a lab's header of names that its C++
+    // includes too (attribute locations, enum values). Throws fw::Error
+    // naming the path if a file cannot be read or does not compile.
     static Shader from_file(const std::string& path);
     // Compiles `source`; `name` stands for the file in messages and labels.
     static Shader from_source(Stage stage, const std::string& source, const std::string& name);
@@ -58,6 +79,10 @@ public:
     const std::string& source() const { return source_; }
 
 private:
+    // Compiles `expanded` (the file's `text` with its includes pasted in).
+    static Shader compile(Stage stage, const std::string& expanded, const std::string& name,
+                          const std::string& text, const std::vector<IncludedFile>& included);
+
     detail::Handle handle_;
     Stage stage_ = Stage::Vertex;
     std::string path_;

@@ -1,6 +1,7 @@
 #include "framework/gl/texture.hpp"
 
 #include "framework/error.hpp"
+#include "framework/gl/binding.hpp"
 #include "framework/gl/debug.hpp"
 
 namespace fw {
@@ -19,22 +20,16 @@ int full_mip_chain(int width, int height) {
 }
 
 // Uploads with `id` bound to GL_TEXTURE_2D of the active unit, tightly packed
-// rows and no pixel unpack buffer, then restores all three. GL_UNPACK_ALIGNMENT
-// defaults to 4, which would misread RGB8 rows whose size is not a multiple of 4.
+// rows and no pixel unpack buffer (with one bound, `data` would be an offset
+// into it), then restores all three. GL_UNPACK_ALIGNMENT defaults to 4, which
+// would misread RGB8 rows whose size is not a multiple of 4.
 void upload(GLuint id, int width, int height, const void* data, GLenum format, GLenum type,
             bool mipmaps) {
-    GLint previous_texture = 0, previous_alignment = 4, previous_unpack = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous_texture);
-    glGetIntegerv(GL_UNPACK_ALIGNMENT, &previous_alignment);
-    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &previous_unpack);
-    glBindTexture(GL_TEXTURE_2D, id);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    ScopedBinding texture = bind_texture_2d_scoped(id);
+    ScopedBinding unpack_buffer = bind_buffer_scoped(GL_PIXEL_UNPACK_BUFFER, 0);
+    ScopedBinding alignment = pixel_store_scoped(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, format, type, data);
     if (mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, previous_alignment);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(previous_unpack));
-    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous_texture));
 }
 
 }  // namespace
@@ -60,19 +55,18 @@ Texture2D::Texture2D(const Texture2DDesc& desc)
     GLuint id = 0;
     glGenTextures(1, &id);
     handle_ = detail::Handle(id, [](GLuint n) { glDeleteTextures(1, &n); });
-    GLint previous = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
-    glBindTexture(GL_TEXTURE_2D, id);
-    glTexStorage2D(GL_TEXTURE_2D, levels_, desc.internal_format, width_, height_);
-    // glTexStorage2D fails (GL_INVALID_ENUM) for a format that is not sized,
-    // such as GL_RGBA instead of GL_RGBA8; catch it here, not at first use.
     GLint immutable = GL_FALSE;
-    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(desc.min_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(desc.mag_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, static_cast<GLint>(desc.wrap));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, static_cast<GLint>(desc.wrap));
-    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
+    {
+        ScopedBinding bind = bind_texture_2d_scoped(id);
+        glTexStorage2D(GL_TEXTURE_2D, levels_, desc.internal_format, width_, height_);
+        // glTexStorage2D fails (GL_INVALID_ENUM) for a format that is not sized,
+        // such as GL_RGBA instead of GL_RGBA8; catch it here, not at first use.
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(desc.min_filter));
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(desc.mag_filter));
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, static_cast<GLint>(desc.wrap));
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, static_cast<GLint>(desc.wrap));
+    }
     if (immutable != GL_TRUE)
         throw UsageError("Texture2DDesc.internal_format " + gl_enum_name(desc.internal_format) +
                          " was rejected by glTexStorage2D; use a sized format such as GL_RGBA8, "

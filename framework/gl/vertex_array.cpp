@@ -1,15 +1,13 @@
 #include "framework/gl/vertex_array.hpp"
 
 #include "framework/error.hpp"
+#include "framework/gl/binding.hpp"
 #include "framework/gl/debug.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
 namespace {
-
-std::string quoted(const std::string& label) {
-    return label.empty() ? std::string("(unlabelled)") : "'" + label + "'";
-}
 
 std::size_t index_size_of(GLenum type) {
     switch (type) {
@@ -38,8 +36,10 @@ VertexLayout& VertexLayout::add(const VertexAttribute& a) {
     return *this;
 }
 
-VertexArray::VertexArray(const VertexArrayDesc& desc) : label_(desc.label) {
-    const std::string where = " (vertex array " + quoted(label_) + ")";
+namespace {
+
+// Throws UsageError naming the field of `desc` that is wrong.
+void check_desc(const VertexArrayDesc& desc, const std::string& where) {
     if (!desc.vertices || desc.vertices->id() == 0)
         throw UsageError("VertexArrayDesc.vertices must point to a created Buffer" + where);
     const VertexLayout& layout = desc.layout;
@@ -48,8 +48,7 @@ VertexArray::VertexArray(const VertexArrayDesc& desc) : label_(desc.label) {
     if (layout.stride() == 0)
         throw UsageError("VertexArrayDesc.layout has stride 0; use VertexLayout::of<Vertex>()" +
                          where);
-    index_size_ = index_size_of(desc.index_type);
-    if (index_size_ == 0)
+    if (index_size_of(desc.index_type) == 0)
         throw UsageError(
             "VertexArrayDesc.index_type must be GL_UNSIGNED_BYTE, "
             "GL_UNSIGNED_SHORT or GL_UNSIGNED_INT, not " +
@@ -63,17 +62,15 @@ VertexArray::VertexArray(const VertexArrayDesc& desc) : label_(desc.label) {
             throw UsageError("VertexAttribute.location " + std::to_string(a.location) +
                              " is not below GL_MAX_VERTEX_ATTRIBS (" + std::to_string(max_attribs) +
                              ")" + where);
+}
 
-    GLuint id = 0;
-    glGenVertexArrays(1, &id);
-    handle_ = detail::Handle(id, [](GLuint name) { glDeleteVertexArrays(1, &name); });
-
-    GLint previous = 0;
-    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previous);
-    glBindVertexArray(id);
+// Describes every attribute of desc.layout to vertex array `id` and attaches
+// the buffers.
+void attach(GLuint id, const VertexArrayDesc& desc) {
+    const ScopedBinding bound = bind_vertex_array_scoped(id);
     // Binding point 0 holds the vertex buffer; every attribute reads from it.
     constexpr GLuint kBinding = 0;
-    for (const VertexAttribute& a : layout.attributes()) {
+    for (const VertexAttribute& a : desc.layout.attributes()) {
         glEnableVertexAttribArray(a.location);
         auto offset = static_cast<GLuint>(a.offset);
         if (a.integer)
@@ -83,17 +80,41 @@ VertexArray::VertexArray(const VertexArrayDesc& desc) : label_(desc.label) {
                                  a.normalized ? GL_TRUE : GL_FALSE, offset);
         glVertexAttribBinding(a.location, kBinding);
     }
-    glBindVertexBuffer(kBinding, desc.vertices->id(), 0, static_cast<GLsizei>(layout.stride()));
+    glBindVertexBuffer(kBinding, desc.vertices->id(), 0,
+                       static_cast<GLsizei>(desc.layout.stride()));
     // The element array binding is part of the vertex array's state: binding
     // it here, while the vertex array is bound, is what attaches the indices.
     if (desc.indices) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, desc.indices->id());
-    glBindVertexArray(static_cast<GLuint>(previous));
+}
 
-    vertex_count_ = desc.vertices->size() / layout.stride();
+}  // namespace
+
+VertexArray::VertexArray(const VertexArrayDesc& desc) : label_(desc.label) {
+    check_desc(desc, " (vertex array " + quoted_label(label_) + ")");
+    GLuint id = 0;
+    glGenVertexArrays(1, &id);
+    handle_ = detail::Handle(id, [](GLuint name) { glDeleteVertexArrays(1, &name); });
+    attach(id, desc);
+
+    index_size_ = index_size_of(desc.index_type);
+    vertex_count_ = desc.vertices->size() / desc.layout.stride();
     has_indices_ = desc.indices != nullptr;
     index_count_ = has_indices_ ? desc.indices->size() / index_size_ : 0;
     index_type_ = desc.index_type;
     set_object_label(GL_VERTEX_ARRAY, id, label_);
+}
+
+VertexArray VertexArray::blank(std::string label) {
+    VertexArray vao;
+    vao.label_ = std::move(label);
+    GLuint id = 0;
+    glGenVertexArrays(1, &id);
+    vao.handle_ = detail::Handle(id, [](GLuint name) { glDeleteVertexArrays(1, &name); });
+    // A name from glGenVertexArrays becomes a vertex array object when it is
+    // first bound; only then may it be labelled.
+    { const ScopedBinding bound = bind_vertex_array_scoped(id); }
+    set_object_label(GL_VERTEX_ARRAY, id, vao.label_);
+    return vao;
 }
 
 void VertexArray::bind() const { glBindVertexArray(id()); }
@@ -102,7 +123,7 @@ void VertexArray::draw(GLenum mode, GLsizei count, GLint first) const {
     if (id() == 0) throw UsageError("VertexArray::draw on an empty VertexArray");
     if (first < 0 || count < 0 ||
         static_cast<std::size_t>(first) + static_cast<std::size_t>(count) > vertex_count_)
-        throw UsageError("VertexArray " + quoted(label_) + ": draw of vertices [" +
+        throw UsageError("VertexArray " + quoted_label(label_) + ": draw of vertices [" +
                          std::to_string(first) + ", " + std::to_string(first + count) +
                          ") but its vertex buffer holds " + std::to_string(vertex_count_));
     bind();
@@ -112,10 +133,10 @@ void VertexArray::draw(GLenum mode, GLsizei count, GLint first) const {
 void VertexArray::draw_indexed(GLenum mode, GLsizei count, std::size_t first_index) const {
     if (id() == 0) throw UsageError("VertexArray::draw_indexed on an empty VertexArray");
     if (!has_indices_)
-        throw UsageError("VertexArray " + quoted(label_) +
+        throw UsageError("VertexArray " + quoted_label(label_) +
                          " has no index buffer: set VertexArrayDesc.indices, or use draw()");
     if (count < 0 || first_index + static_cast<std::size_t>(count) > index_count_)
-        throw UsageError("VertexArray " + quoted(label_) + ": draw_indexed of indices [" +
+        throw UsageError("VertexArray " + quoted_label(label_) + ": draw_indexed of indices [" +
                          std::to_string(first_index) + ", " +
                          std::to_string(first_index + static_cast<std::size_t>(count)) +
                          ") but its index buffer holds " + std::to_string(index_count_));

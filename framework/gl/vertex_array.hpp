@@ -120,6 +120,11 @@ class VertexArray {
 public:
     VertexArray() = default;
     explicit VertexArray(const VertexArrayDesc& desc);
+    // A labelled vertex array with nothing attached, for a lab that shows the
+    // calls: it binds the vertex array and describes the attributes itself
+    // (glBindBuffer, glVertexAttribPointer, glEnableVertexAttribArray), as
+    // labs/00_pipeline does. vertex_count() and index_count() are then 0.
+    static VertexArray blank(std::string label);
 
     GLuint id() const { return handle_.get(); }
     const std::string& label() const { return label_; }

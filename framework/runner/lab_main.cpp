@@ -1,11 +1,13 @@
 // `lab`: the labs themselves (SPEC.md, Executables). Lists labs and their
 // checkpoints, renders one frame offscreen, or opens a window.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "framework/checkpoints.hpp"
 #include "framework/context.hpp"
@@ -27,11 +29,15 @@ void print_list(bool as_json) {
     for (const fw::RegisteredLab& lab : fw::registered_labs()) {
         json params = json::array();
         for (const fw::Param& p : lab.info.params)
-            params.push_back({{"name", p.name}, {"type", fw::param_type_name(p.type)},
-                              {"default", p.default_text()}, {"range", p.range_text()},
+            params.push_back({{"name", p.name},
+                              {"type", fw::param_type_name(p.type)},
+                              {"default", p.default_text()},
+                              {"range", p.range_text()},
                               {"help", p.help_text}});
-        labs.push_back({{"number", lab.info.number}, {"name", lab.info.id},
-                        {"title", lab.info.title}, {"params", params}});
+        labs.push_back({{"number", lab.info.number},
+                        {"name", lab.info.id},
+                        {"title", lab.info.title},
+                        {"params", params}});
     }
     if (as_json) {
         std::cout << labs.dump(2) << "\n";
@@ -39,7 +45,8 @@ void print_list(bool as_json) {
     }
     for (const json& lab : labs)
         std::printf("%02d  %-15s %s\n", lab["number"].get<int>(),
-                    lab["name"].get<std::string>().c_str(), lab["title"].get<std::string>().c_str());
+                    lab["name"].get<std::string>().c_str(),
+                    lab["title"].get<std::string>().c_str());
 }
 
 void print_checkpoints(const fw::RegisteredLab& lab, bool as_json) {
@@ -47,7 +54,8 @@ void print_checkpoints(const fw::RegisteredLab& lab, bool as_json) {
     if (as_json) {
         json out = json::array();
         for (const fw::Checkpoint& cp : all)
-            out.push_back({{"name", cp.name}, {"visibility", cp.visibility},
+            out.push_back({{"name", cp.name},
+                           {"visibility", cp.visibility},
                            {"description", cp.description},
                            {"params", fw::checkpoint_params(lab, cp).to_json()},
                            {"checks", cp.checks.size()}});
@@ -76,7 +84,8 @@ fw::ParamValues resolve_params(const fw::RegisteredLab& lab, const std::string& 
 void write_text(const std::string& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary);
     if (!(out << text))
-        throw fw::Error("cannot write '" + path + "'; check that its directory exists and is writable");
+        throw fw::Error("cannot write '" + path +
+                        "'; check that its directory exists and is writable");
 }
 
 struct RenderArgs {
@@ -106,7 +115,8 @@ void render_checkpoints(const std::vector<std::string>& lab_ids, const std::stri
     for (const std::string& id : lab_ids) labs.push_back(&fw::find_lab(id));
     if (labs.empty())
         for (const fw::RegisteredLab& lab : fw::registered_labs()) labs.push_back(&lab);
-    fw::Backend backend = backend_name.empty() ? fw::backend_from_env() : fw::parse_backend(backend_name);
+    fw::Backend backend =
+        backend_name.empty() ? fw::backend_from_env() : fw::parse_backend(backend_name);
     auto context = fw::create_offscreen_context(backend);
     for (const fw::RegisteredLab* lab : labs) {
         std::string lab_dir = dir + "/" + lab->info.id;
@@ -120,66 +130,149 @@ void render_checkpoints(const std::vector<std::string>& lab_ids, const std::stri
             fw::write_png(base + ".png", out.color);
             fw::write_pfm(base + ".pfm", out.depth);
             write_text(base + ".json", out.stats.dump(2) + "\n");
-            std::printf("%-12s %-28s %s.png\n", lab->info.id.c_str(), cp.name.c_str(), base.c_str());
+            std::printf("%-12s %-28s %s.png\n", lab->info.id.c_str(), cp.name.c_str(),
+                        base.c_str());
         }
     }
+}
+
+// A subcommand and what runs it once its options are parsed.
+struct Command {
+    CLI::App* app;
+    std::function<void()> run;
+};
+
+const char* const kBackendHelp = "auto|osmesa|egl (default $LAB_BACKEND or auto)";
+
+Command add_list(CLI::App& app, bool& as_json) {
+    auto* list = app.add_subcommand("list", "List the labs");
+    list->add_flag("--json", as_json, "Print JSON with every parameter");
+    return {list, [&as_json] { print_list(as_json); }};
+}
+
+struct CheckpointsArgs {
+    std::string lab;
+    bool json = false;
+};
+
+Command add_checkpoints(CLI::App& app, CheckpointsArgs& a) {
+    auto* checkpoints = app.add_subcommand("checkpoints", "List a lab's checkpoints");
+    checkpoints->add_option("LAB", a.lab, "Lab name")->required();
+    checkpoints->add_flag("--json", a.json, "Print JSON");
+    return {checkpoints, [&a] { print_checkpoints(fw::find_lab(a.lab), a.json); }};
+}
+
+Command add_render(CLI::App& app, RenderArgs& a) {
+    auto* render_cmd = app.add_subcommand("render", "Draw one frame offscreen into a PNG");
+    render_cmd->add_option("LAB", a.lab, "Lab name")->required();
+    render_cmd->add_option("--set", a.sets, "Set a parameter: name=value (repeatable)");
+    render_cmd->add_option("--checkpoint", a.checkpoint, "Start from this checkpoint's parameters");
+    render_cmd->add_option("--size", a.size, "Frame size WxH (default 512x512)");
+    render_cmd->add_option("--backend", a.backend, kBackendHelp);
+    render_cmd->add_option("-o,--output", a.output, "PNG file to write")->required();
+    render_cmd->add_option("--depth-out", a.depth_out, "Write window-space depth as PFM");
+    render_cmd->add_option("--stats", a.stats, "Write frame statistics as JSON");
+    return {render_cmd, [&a] { render(a); }};
+}
+
+struct RenderCheckpointsArgs {
+    std::vector<std::string> labs;
+    std::string out = "renders", backend;
+};
+
+Command add_render_checkpoints(CLI::App& app, RenderCheckpointsArgs& a) {
+    auto* render_cps = app.add_subcommand(
+        "render-checkpoints", "Render every checkpoint of the labs (all when none) in one context");
+    render_cps->add_option("LAB", a.labs, "Lab names");
+    render_cps->add_option("--out", a.out, "Directory to write into (default ./renders)");
+    render_cps->add_option("--backend", a.backend, kBackendHelp);
+    return {render_cps, [&a] { render_checkpoints(a.labs, a.out, a.backend); }};
+}
+
+struct GradeChildArgs {
+    std::string job, out, backend;
+};
+
+Command add_grade_child(CLI::App& app, GradeChildArgs& a) {
+    auto* grade_child = app.add_subcommand(
+        "grade-child", "Used by 'course grade': render and evaluate what a job file lists");
+    grade_child->group("");  // not listed in --help: course's interface, not the user's
+    grade_child->add_option("--job", a.job, "Job file (JSON)")->required();
+    grade_child->add_option("--out", a.out, "Directory for the outputs")->required();
+    grade_child->add_option("--backend", a.backend, "auto|osmesa|egl");
+    return {grade_child, [&a] { fw::grade_child(a.job, a.out, a.backend); }};
+}
+
+struct RunArgs {
+    std::string lab, size = "512x512";
+    std::vector<std::string> sets;
+    int frames = 0;
+    std::string screenshot;
+    bool no_ui = false;
+};
+
+void run_in_window(const RunArgs& a) {
+    const fw::RegisteredLab& lab = fw::find_lab(a.lab);
+    fw::ParamValues params = resolve_params(lab, "", a.sets);
+#if LAB_HAVE_WINDOW
+    fw::WindowOptions options;
+    fw::parse_size(a.size, options.width, options.height);
+    options.frames = a.frames;
+    options.screenshot = a.screenshot;
+    options.show_ui = !a.no_ui;
+    fw::run_window(lab, params, options);
+#else
+    throw fw::EnvironmentError(
+        "this build has no window: GLFW or Dear ImGui (libglfw3-dev, libimgui-dev) was "
+        "missing when CMake ran; install them and rebuild, or use 'lab render'");
+#endif
+}
+
+Command add_run(CLI::App& app, RunArgs& a) {
+    auto* run = app.add_subcommand("run", "Open the lab in a window with a parameter panel");
+    run->add_option("LAB", a.lab, "Lab name")->required();
+    run->add_option("--set", a.sets, "Set a parameter: name=value (repeatable)");
+    run->add_option("--size", a.size, "Window size WxH (default 512x512)");
+    run->add_option("--frames", a.frames, "Quit after N frames")->check(CLI::NonNegativeNumber);
+    run->add_option("--screenshot", a.screenshot, "Save the last frame to this PNG");
+    run->add_flag("--no-ui", a.no_ui, "Hide the parameter panel");
+    return {run, [&a] { run_in_window(a); }};
+}
+
+// Runs the chosen command; errors print as `lab: error: ...` with the exit
+// status their type implies.
+int run_chosen(const std::vector<Command>& commands) {
+    try {
+        for (const Command& command : commands)
+            if (*command.app) command.run();
+    } catch (const fw::Error& e) {
+        std::fprintf(stderr, "lab: error: %s\n", e.what());
+        return fw::exit_code_for(e);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "lab: internal error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"lab: the OpenGL labs. Render offscreen, open a window, list labs and checkpoints."};
+    CLI::App app{
+        "lab: the OpenGL labs. Render offscreen, open a window, list labs and checkpoints."};
     app.require_subcommand(1);
-
-    bool json_list = false;
-    auto* list = app.add_subcommand("list", "List the labs");
-    list->add_flag("--json", json_list, "Print JSON with every parameter");
-
-    std::string cp_lab;
-    bool json_cp = false;
-    auto* checkpoints = app.add_subcommand("checkpoints", "List a lab's checkpoints");
-    checkpoints->add_option("LAB", cp_lab, "Lab name")->required();
-    checkpoints->add_flag("--json", json_cp, "Print JSON");
-
-    RenderArgs ra;
-    auto* render_cmd = app.add_subcommand("render", "Draw one frame offscreen into a PNG");
-    render_cmd->add_option("LAB", ra.lab, "Lab name")->required();
-    render_cmd->add_option("--set", ra.sets, "Set a parameter: name=value (repeatable)");
-    render_cmd->add_option("--checkpoint", ra.checkpoint, "Start from this checkpoint's parameters");
-    render_cmd->add_option("--size", ra.size, "Frame size WxH (default 512x512)");
-    render_cmd->add_option("--backend", ra.backend, "auto|osmesa|egl (default $LAB_BACKEND or auto)");
-    render_cmd->add_option("-o,--output", ra.output, "PNG file to write")->required();
-    render_cmd->add_option("--depth-out", ra.depth_out, "Write window-space depth as PFM");
-    render_cmd->add_option("--stats", ra.stats, "Write frame statistics as JSON");
-
-    std::vector<std::string> rc_labs;
-    std::string rc_out = "renders", rc_backend;
-    auto* render_cps = app.add_subcommand(
-        "render-checkpoints", "Render every checkpoint of the labs (all when none) in one context");
-    render_cps->add_option("LAB", rc_labs, "Lab names");
-    render_cps->add_option("--out", rc_out, "Directory to write into (default ./renders)");
-    render_cps->add_option("--backend", rc_backend, "auto|osmesa|egl (default $LAB_BACKEND or auto)");
-
-    std::string gc_job, gc_out, gc_backend;
-    auto* grade_child = app.add_subcommand(
-        "grade-child", "Used by 'course grade': render and evaluate what a job file lists");
-    grade_child->group("");  // not listed in --help: course's interface, not the user's
-    grade_child->add_option("--job", gc_job, "Job file (JSON)")->required();
-    grade_child->add_option("--out", gc_out, "Directory for the outputs")->required();
-    grade_child->add_option("--backend", gc_backend, "auto|osmesa|egl");
-
-    std::string run_lab, run_size = "512x512";
-    std::vector<std::string> run_sets;
-    int run_frames = 0;
-    std::string run_screenshot;
-    bool no_ui = false;
-    auto* run = app.add_subcommand("run", "Open the lab in a window with a parameter panel");
-    run->add_option("LAB", run_lab, "Lab name")->required();
-    run->add_option("--set", run_sets, "Set a parameter: name=value (repeatable)");
-    run->add_option("--size", run_size, "Window size WxH (default 512x512)");
-    run->add_option("--frames", run_frames, "Quit after N frames")->check(CLI::NonNegativeNumber);
-    run->add_option("--screenshot", run_screenshot, "Save the last frame to this PNG");
-    run->add_flag("--no-ui", no_ui, "Hide the parameter panel");
+    bool list_json = false;
+    CheckpointsArgs checkpoints;
+    RenderArgs render_args;
+    RenderCheckpointsArgs render_checkpoints_args;
+    GradeChildArgs grade_child_args;
+    RunArgs run_args;
+    const std::vector<Command> commands = {add_list(app, list_json),
+                                           add_checkpoints(app, checkpoints),
+                                           add_render(app, render_args),
+                                           add_render_checkpoints(app, render_checkpoints_args),
+                                           add_grade_child(app, grade_child_args),
+                                           add_run(app, run_args)};
 
     try {
         app.parse(argc, argv);
@@ -193,35 +286,5 @@ int main(int argc, char** argv) {
                                                    : app.get_subcommands()[0]->get_name().c_str());
         return 2;
     }
-
-    try {
-        if (*list) print_list(json_list);
-        if (*checkpoints) print_checkpoints(fw::find_lab(cp_lab), json_cp);
-        if (*render_cmd) render(ra);
-        if (*render_cps) render_checkpoints(rc_labs, rc_out, rc_backend);
-        if (*grade_child) fw::grade_child(gc_job, gc_out, gc_backend);
-        if (*run) {
-            const fw::RegisteredLab& lab = fw::find_lab(run_lab);
-            fw::ParamValues params = resolve_params(lab, "", run_sets);
-#if LAB_HAVE_WINDOW
-            fw::WindowOptions options;
-            fw::parse_size(run_size, options.width, options.height);
-            options.frames = run_frames;
-            options.screenshot = run_screenshot;
-            options.show_ui = !no_ui;
-            fw::run_window(lab, params, options);
-#else
-            throw fw::EnvironmentError(
-                "this build has no window: GLFW or Dear ImGui (libglfw3-dev, libimgui-dev) was "
-                "missing when CMake ran; install them and rebuild, or use 'lab render'");
-#endif
-        }
-    } catch (const fw::Error& e) {
-        std::fprintf(stderr, "lab: error: %s\n", e.what());
-        return fw::exit_code_for(e);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "lab: internal error: %s\n", e.what());
-        return 1;
-    }
-    return 0;
+    return run_chosen(commands);
 }

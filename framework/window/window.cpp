@@ -82,6 +82,14 @@ void on_mouse_button(GLFWwindow* window, int button, int action, int /*mods*/) {
     }
 }
 
+// The frame the window draws now: its framebuffer's size, and the time.
+Frame frame_of(GLFWwindow* window) {
+    Frame frame;
+    glfwGetFramebufferSize(window, &frame.width, &frame.height);
+    frame.time = glfwGetTime();
+    return frame;
+}
+
 void on_cursor(GLFWwindow* window, double x, double y) {
     InputState& in = input_of(window);
     if (!in.dragging) return;
@@ -89,13 +97,13 @@ void on_cursor(GLFWwindow* window, double x, double y) {
     double dx = x - in.last_x, dy = in.last_y - y;
     in.last_x = x;
     in.last_y = y;
-    guarded(in, [&] { in.lab->on_drag(*in.params, dx, dy); });
+    guarded(in, [&] { in.lab->on_drag(*in.params, frame_of(window), dx, dy); });
 }
 
 void on_scroll(GLFWwindow* window, double /*x*/, double y) {
     InputState& in = input_of(window);
     if (ImGui::GetIO().WantCaptureMouse) return;
-    guarded(in, [&] { in.lab->on_scroll(*in.params, y); });
+    guarded(in, [&] { in.lab->on_scroll(*in.params, frame_of(window), y); });
 }
 
 // The window as it looks now: the back buffer, after drawing, before the swap.
@@ -177,6 +185,107 @@ void print_new(const std::vector<std::string>& problems, std::vector<std::string
     printed = problems;
 }
 
+void install_callbacks(GLFWwindow* window, InputState& input) {
+    glfwSetWindowUserPointer(window, &input);
+    glfwSetKeyCallback(window, on_key);
+    glfwSetMouseButtonCallback(window, on_mouse_button);
+    glfwSetCursorPosCallback(window, on_cursor);
+    glfwSetScrollCallback(window, on_scroll);
+}
+
+// The frames of one window and what they share: the lab and its parameters,
+// the framebuffer it draws into, and the problems shown in the panel.
+class WindowLoop {
+public:
+    WindowLoop(const RegisteredLab& lab, Lab& instance, ParamValues& params,
+               const WindowOptions& options, GLFWwindow* window, InputState& input)
+        : lab_(lab),
+          instance_(instance),
+          params_(params),
+          options_(options),
+          window_(window),
+          input_(input) {}
+
+    // Frame `n` (from 1); false once it was the last.
+    bool frame(int n, const std::vector<win::ScriptedKey>& scripted, ProgramLibrary& programs,
+               win::ImGuiLayer& imgui, const ContextInfo& context) {
+        glfwPollEvents();
+        for (const win::ScriptedKey& k : scripted)
+            if (k.frame == n) on_key(window_, k.key, 0, GLFW_PRESS, k.mods);
+        const bool last =
+            glfwWindowShouldClose(window_) || (options_.frames > 0 && n >= options_.frames);
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(window_, &width, &height);
+        if (width == 0 || height == 0) {  // minimised
+            if (!last) glfwWaitEvents();
+            return !last;
+        }
+        if (input_.reload) {
+            input_.reload = false;
+            printed_.clear();  // a failed retry prints its error again
+            reload_errors_ = reload_shaders(programs, lab_.info.id);
+        }
+        resize(width, height);
+        const std::vector<std::string> problems = draw();
+        imgui.begin_frame();
+        if (options_.show_ui) win::draw_panel(lab_, params_, context.gl_renderer);
+        win::draw_errors(problems);
+        imgui.end_frame();
+        if (input_.screenshot) save_screenshot(width, height);
+        if (last && !options_.screenshot.empty())
+            write_png(options_.screenshot, read_window(width, height));
+        glfwSwapBuffers(window_);
+        return !last;
+    }
+
+private:
+    // A framebuffer of the window's size, made again when the size changes.
+    void resize(int width, int height) {
+        if (framebuffer_ && framebuffer_->width() == width && framebuffer_->height() == height)
+            return;
+        framebuffer_.reset();
+        framebuffer_ = std::make_unique<Framebuffer>(FramebufferDesc{
+            width, height, "window " + std::to_string(width) + "x" + std::to_string(height)});
+    }
+
+    // Draws the lab's frame into the window; what went wrong, printed once.
+    std::vector<std::string> draw() {
+        const double time =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        std::vector<std::string> problems = reload_errors_;
+        for (std::string& p : draw_lab(instance_, lab_.info.id, params_, *framebuffer_, time))
+            problems.push_back(std::move(p));
+        if (!input_.error.empty()) problems.push_back(input_.error);
+        print_new(problems, printed_);
+        return problems;
+    }
+
+    // F12: screenshot-<lab>-NNN.png; a failure is shown in the window.
+    void save_screenshot(int width, int height) {
+        input_.screenshot = false;
+        const std::string path = next_screenshot_path(lab_.info.id);
+        try {
+            write_png(path, read_window(width, height));
+            std::printf("%s\n", path.c_str());
+            std::fflush(stdout);
+            input_.error.clear();
+        } catch (const Error& e) {
+            input_.error = std::string("Screenshot failed: ") + e.what();
+        }
+    }
+
+    const RegisteredLab& lab_;
+    Lab& instance_;
+    ParamValues& params_;
+    const WindowOptions& options_;
+    GLFWwindow* window_;
+    InputState& input_;
+    const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    std::unique_ptr<Framebuffer> framebuffer_;
+    std::vector<std::string> reload_errors_;  // stay until a reload succeeds
+    std::vector<std::string> printed_;
+};
+
 }  // namespace
 
 void run_window(const RegisteredLab& lab, ParamValues params, const WindowOptions& options) {
@@ -191,79 +300,19 @@ void run_window(const RegisteredLab& lab, ParamValues params, const WindowOption
     enable_debug_output();
 
     InputState input;
-    glfwSetWindowUserPointer(window.get(), &input);
-    glfwSetKeyCallback(window.get(), on_key);
-    glfwSetMouseButtonCallback(window.get(), on_mouse_button);
-    glfwSetCursorPosCallback(window.get(), on_cursor);
-    glfwSetScrollCallback(window.get(), on_scroll);
+    install_callbacks(window.get(), input);
     win::ImGuiLayer imgui(window.get());
 
     // The lab's GL objects must die while the context lives: declared after it.
-    ProgramLibrary programs;
+    ProgramLibrary programs(lab.info.dir);
     std::unique_ptr<Lab> instance = lab.create();
     instance->init(programs);
     check_gl("init of lab " + id);
     input.lab = instance.get();
     input.params = &params;
 
-    std::unique_ptr<Framebuffer> framebuffer;
-    std::vector<std::string> reload_errors;  // stay until a reload succeeds
-    std::vector<std::string> printed;
-    const auto start = std::chrono::steady_clock::now();
-    for (int frame = 1;; ++frame) {
-        glfwPollEvents();
-        for (const win::ScriptedKey& k : scripted)
-            if (k.frame == frame) on_key(window.get(), k.key, 0, GLFW_PRESS, k.mods);
-        const bool last =
-            glfwWindowShouldClose(window.get()) || (options.frames > 0 && frame >= options.frames);
-        int width = 0, height = 0;
-        glfwGetFramebufferSize(window.get(), &width, &height);
-        if (width == 0 || height == 0) {  // minimised
-            if (last) break;
-            glfwWaitEvents();
-            continue;
-        }
-        if (input.reload) {
-            input.reload = false;
-            printed.clear();  // a failed retry prints its error again
-            reload_errors = reload_shaders(programs, id);
-        }
-        if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
-            framebuffer.reset();
-            framebuffer = std::make_unique<Framebuffer>(FramebufferDesc{
-                width, height, "window " + std::to_string(width) + "x" + std::to_string(height)});
-        }
-
-        double time =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::vector<std::string> problems = reload_errors;
-        for (std::string& p : draw_lab(*instance, id, params, *framebuffer, time))
-            problems.push_back(std::move(p));
-        if (!input.error.empty()) problems.push_back(input.error);
-        print_new(problems, printed);
-
-        imgui.begin_frame();
-        if (options.show_ui) win::draw_panel(lab, params, context.gl_renderer);
-        win::draw_errors(problems);
-        imgui.end_frame();
-
-        if (input.screenshot) {
-            input.screenshot = false;
-            std::string path = next_screenshot_path(id);
-            try {
-                write_png(path, read_window(width, height));
-                std::printf("%s\n", path.c_str());
-                std::fflush(stdout);
-                input.error.clear();
-            } catch (const Error& e) {
-                input.error = std::string("Screenshot failed: ") + e.what();
-            }
-        }
-        if (last && !options.screenshot.empty())
-            write_png(options.screenshot, read_window(width, height));
-        glfwSwapBuffers(window.get());
-        if (last) break;
-    }
+    WindowLoop loop(lab, *instance, params, options, window.get(), input);
+    for (int frame = 1; loop.frame(frame, scripted, programs, imgui, context);) ++frame;
 }
 
 }  // namespace fw

@@ -1,5 +1,8 @@
 #include "grading/units/reference.hpp"
 
+#include "framework/lab.hpp"
+#include "framework/text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -115,7 +118,9 @@ bool match(const json& e, const json& o, double tolerance, const std::string& wh
 
 }  // namespace
 
-bool register_reference(ReferenceUnit unit) {
+bool register_reference(std::string_view lab_dir, ReferenceUnit unit) {
+    int number = 0;
+    fw::parse_lab_dir(lab_dir, number, unit.lab);
     if (static_cast<int>(unit.domains.size()) != unit.function.arity)
         throw fw::Error("reference '" + unit.lab + "." + unit.function.name + "' takes " +
                         std::to_string(unit.function.arity) + " arguments but has " +
@@ -132,13 +137,13 @@ const ReferenceUnit& find_reference(std::string_view lab, std::string_view funct
         auto f = l->second.find(function);
         if (f != l->second.end()) return f->second;
     }
-    std::string names;
-    if (l != all.end())
-        for (const auto& [name, unit] : l->second) names += (names.empty() ? "" : ", ") + name;
+    const std::string names =
+        l == all.end() ? std::string()
+                       : fw::join(l->second, ", ", [](const auto& entry) { return entry.first; });
     throw fw::Error("course has no reference for unit function '" + std::string(function) +
                     "' of lab '" + std::string(lab) + "'; " +
                     (names.empty() ? "it has none for that lab" : "it has: " + names) +
-                    " (references live in grading/units/)");
+                    " (references live in labs/NN_name/grading/*.cpp)");
 }
 
 json random_arguments(const ReferenceUnit& unit, std::mt19937& rng) {

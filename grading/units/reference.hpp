@@ -1,8 +1,9 @@
 // Reference implementations for `unit` checks, in `course`'s own code (GLM or
-// a closed form), never the lab's. One file per lab (grading/units/NN_name.cpp)
-// registers its references with one line each:
+// a closed form), never the lab's. Each lab keeps its references in its own
+// folder (labs/NN_name/grading/*.cpp, compiled into `course` only) and
+// registers them with one line each, for the lab of that folder:
 //
-//   COURSE_REFERENCE(transforms, translate, &ref_translate, {grading::vec(3, -10, 10)});
+//   COURSE_REFERENCE(translate, &ref_translate, {grading::vec(3, -10, 10)});
 //
 // For a unit check {"kind": "unit", "function": "translate", "random": 1000,
 // "edge": [[[0, 0, 0]], ...]}, `course` draws `random` fresh argument lists from
@@ -41,7 +42,9 @@ struct ReferenceUnit {
     double tolerance = 1e-4;        // default; a check may set its own
 };
 
-bool register_reference(ReferenceUnit unit);
+// Registers `unit` for the lab in folder `lab_dir` ("01_transforms"), which
+// fills in unit.lab.
+bool register_reference(std::string_view lab_dir, ReferenceUnit unit);
 // Course's reference for a lab's unit function; throws fw::Error listing the
 // lab's references when there is none by that name. The registry owns every
 // reference for the life of the program; the names are taken as views so that
@@ -59,11 +62,18 @@ bool results_match(const nlohmann::json& expected, const nlohmann::json& observe
 
 }  // namespace grading
 
+#ifndef FW_LAB_DIR
+#define FW_LAB_DIR ""  // only labs/NN_name/grading/*.cpp get the folder
+#endif
+
 #define COURSE_REFERENCE_CAT2(a, b) a##b
 #define COURSE_REFERENCE_CAT(a, b) COURSE_REFERENCE_CAT2(a, b)
-// COURSE_REFERENCE(lab_id, function_name, &reference_fn, {domains...}[, tolerance])
-#define COURSE_REFERENCE(LAB, NAME, FN, ...)                                                  \
-    namespace {                                                                               \
-    const bool COURSE_REFERENCE_CAT(course_reference_, __LINE__) = ::grading::register_reference( \
-        {#LAB, ::fw::unit_function(#NAME, FN), __VA_ARGS__});                                 \
+// COURSE_REFERENCE(function_name, &reference_fn, {domains...}[, tolerance])
+#define COURSE_REFERENCE(NAME, FN, ...)                                                    \
+    namespace {                                                                            \
+    static_assert(sizeof(FW_LAB_DIR) > 1,                                                  \
+                  "COURSE_REFERENCE is only for files in labs/NN_name/grading/");           \
+    const bool COURSE_REFERENCE_CAT(course_reference_, __LINE__) =                         \
+        ::grading::register_reference(FW_LAB_DIR,                                          \
+                                      {"", ::fw::unit_function(#NAME, FN), __VA_ARGS__});   \
     }

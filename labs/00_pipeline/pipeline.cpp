@@ -1,15 +1,18 @@
 // Lab 0 `pipeline`: what the pipeline does to triangles (warm-up).
 //
-// Teaches: the depth test versus draw order; an indexed face set versus the
-// flat vertex list it expands to; how primitive assembly reads one vertex list
-// in seven modes; front faces, back faces and culling.
+// Teaches: how a vertex array describes the vertex layout; the depth test
+// versus draw order; an indexed face set versus the flat vertex list it
+// expands to; how primitive assembly reads one vertex list in seven modes;
+// front faces, back faces and culling.
 // Lecture: depth buffer and draw order, indexed face sets, primitive types
 // (points, lines, strips, fans), face orientation and back-face culling.
-// GL: glDrawArrays, glDrawElements, glEnable/glDisable, glDepthFunc,
-// glFrontFace, glCullFace, gl_PointSize with GL_PROGRAM_POINT_SIZE.
-// Student parts (marked TODO): set_depth_test()
-// and set_culling() below, expand_indices() in meshes.cpp, and the
-// pass-through in shaders/00_pipeline/pipeline.vert.
+// GL: glBindVertexArray, glBindBuffer, glVertexAttribPointer,
+// glEnableVertexAttribArray, glDrawArrays, glDrawElements, glEnable/glDisable,
+// glDepthFunc, glFrontFace, glCullFace, gl_PointSize with GL_PROGRAM_POINT_SIZE.
+// Student parts (marked TODO): describe_vertex_layout(), draw_face_set(),
+// set_depth_test() and set_culling() below, expand_indices() in meshes.cpp,
+// and the pass-through in shaders/00_pipeline/pipeline.vert.
+#include <cstddef>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #include <vector>
@@ -17,35 +20,90 @@
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
 #include "meshes.hpp"
+// A_POSITION, A_COLOR: attribute locations, shared with pipeline.vert.
+#include "shared.glsl"
 
 namespace pipeline {
 
 namespace {
 
-// Vertex attribute locations, the same numbers as `layout(location = ...)`
-// in shaders/00_pipeline/pipeline.vert: change both or neither.
-constexpr GLuint kPositionLocation = 0;  // in vec3 a_position
-constexpr GLuint kColorLocation = 1;     // in vec3 a_color
 constexpr const char* kMvpUniform = "u_mvp";
 
-// The values of `primitive`, in the order the parameter lists them.
-struct PrimitiveMode {
-    const char* name;
-    GLenum mode;
+// The parameters' choices. Each enum is what draw() switches on; the names
+// are what --set, checkpoints.json and the window's panel use.
+enum class Scene { Order, Indexed, Primitives, Culling };
+constexpr fw::Choice<Scene> kScenes[] = {{Scene::Order, "order"},
+                                         {Scene::Indexed, "indexed"},
+                                         {Scene::Primitives, "primitives"},
+                                         {Scene::Culling, "culling"}};
+enum class First { Red, Blue };
+constexpr fw::Choice<First> kFirsts[] = {{First::Red, "red"}, {First::Blue, "blue"}};
+enum class Storage { Indexed, Flat };
+constexpr fw::Choice<Storage> kStorages[] = {{Storage::Indexed, "indexed"},
+                                             {Storage::Flat, "flat"}};
+// Each value is the GL primitive mode itself.
+enum class Primitive : GLenum {
+    Points = GL_POINTS,
+    Lines = GL_LINES,
+    LineStrip = GL_LINE_STRIP,
+    LineLoop = GL_LINE_LOOP,
+    Triangles = GL_TRIANGLES,
+    TriangleStrip = GL_TRIANGLE_STRIP,
+    TriangleFan = GL_TRIANGLE_FAN,
 };
-constexpr PrimitiveMode kPrimitiveModes[] = {
-    {"points", GL_POINTS},
-    {"lines", GL_LINES},
-    {"line_strip", GL_LINE_STRIP},
-    {"line_loop", GL_LINE_LOOP},
-    {"triangles", GL_TRIANGLES},
-    {"triangle_strip", GL_TRIANGLE_STRIP},
-    {"triangle_fan", GL_TRIANGLE_FAN},
+constexpr fw::Choice<Primitive> kPrimitives[] = {
+    {Primitive::Points, "points"},
+    {Primitive::Lines, "lines"},
+    {Primitive::LineStrip, "line_strip"},
+    {Primitive::LineLoop, "line_loop"},
+    {Primitive::Triangles, "triangles"},
+    {Primitive::TriangleStrip, "triangle_strip"},
+    {Primitive::TriangleFan, "triangle_fan"},
 };
+enum class Cull { None, Back, Front };
+constexpr fw::Choice<Cull> kCulls[] = {{Cull::None, "none"}, {Cull::Back, "back"}, {Cull::Front, "front"}};
 
 // scene=culling's camera: on the +z axis looking at the cube's centre.
 const glm::vec3 kEye{0.0f, 0.0f, 3.0f};
 constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
+
+// With the vertex array bound: where each vertex's attributes are in
+// `vertices`, a buffer of Vertex structs (meshes.hpp: position, then colour,
+// 24 bytes a vertex). For each attribute, at its location (A_POSITION,
+// A_COLOR): how many floats, the stride between vertices and the offset of
+// the member in the struct; then enable it. glVertexAttribPointer reads from
+// the buffer bound to GL_ARRAY_BUFFER when it is called.
+void describe_vertex_layout(const fw::Buffer& vertices) {
+    // BEGIN SOLUTION
+    // STUDENT: (void)vertices;  // TODO: glBindBuffer, then per attribute glVertexAttribPointer and glEnableVertexAttribArray
+    glBindBuffer(GL_ARRAY_BUFFER, vertices.id());
+    glVertexAttribPointer(A_POSITION, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<const void*>(offsetof(Vertex, position)));
+    glEnableVertexAttribArray(A_POSITION);
+    glVertexAttribPointer(A_COLOR, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<const void*>(offsetof(Vertex, color)));
+    glEnableVertexAttribArray(A_COLOR);
+    // END SOLUTION
+}
+
+// scene=indexed: the face set's 4 triangles, from `indexed` (6 vertices and
+// `count` = 12 indices, GL_UNSIGNED_INT, in its element buffer) or from
+// `flat` (the `count` vertices the indices expand to). Bind the vertex array
+// the storage names, then draw triangles: glDrawElements reads the indices,
+// glDrawArrays reads the vertices in order.
+void draw_face_set(Storage storage, const fw::VertexArray& indexed, const fw::VertexArray& flat,
+                   GLsizei count) {
+    // BEGIN SOLUTION
+    // STUDENT: (void)storage, (void)indexed, (void)flat, (void)count;  // TODO: glBindVertexArray, then glDrawElements or glDrawArrays
+    if (storage == Storage::Indexed) {
+        glBindVertexArray(indexed.id());
+        glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+    } else {
+        glBindVertexArray(flat.id());
+        glDrawArrays(GL_TRIANGLES, 0, count);
+    }
+    // END SOLUTION
+}
 
 // On: of the fragments that land on one pixel, the one with the smallest
 // depth is kept (GL_LESS), whatever the draw order. Off: every fragment is
@@ -62,21 +120,34 @@ void set_depth_test(bool on) {
     // END SOLUTION
 }
 
-// `cull` is "none", "back" or "front". A triangle whose vertices run
-// counter-clockwise on screen is a front face (the cube's faces are CCW seen
-// from outside); "back" drops the faces turned away from the eye, "front" the
-// faces turned towards it.
-void set_culling(const std::string& cull) {
+// A triangle whose vertices run counter-clockwise on screen is a front face
+// (the cube's faces are CCW seen from outside); Cull::Back drops the faces
+// turned away from the eye, Cull::Front the faces turned towards it.
+void set_culling(Cull cull) {
     // BEGIN SOLUTION
-    // STUDENT: (void)cull;  // TODO: glFrontFace; unless "none", glEnable(GL_CULL_FACE), glCullFace
+    // STUDENT: (void)cull;  // TODO: glFrontFace; unless Cull::None, glEnable(GL_CULL_FACE), glCullFace
     glFrontFace(GL_CCW);
-    if (cull == "none") {
+    if (cull == Cull::None) {
         glDisable(GL_CULL_FACE);
     } else {
         glEnable(GL_CULL_FACE);
-        glCullFace(cull == "front" ? GL_FRONT : GL_BACK);
+        glCullFace(cull == Cull::Front ? GL_FRONT : GL_BACK);
     }
     // END SOLUTION
+}
+
+// A vertex array reading `vertices` through the layout that
+// describe_vertex_layout() gives, and `indices` when there are any.
+fw::VertexArray make_vertex_array(const std::string& label, const fw::Buffer& vertices,
+                                  const fw::Buffer* indices) {
+    fw::VertexArray vao = fw::VertexArray::blank(label);
+    glBindVertexArray(vao.id());
+    describe_vertex_layout(vertices);
+    // The element array binding is part of the bound vertex array's state:
+    // binding the indices now attaches them to this vertex array.
+    if (indices) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices->id());
+    glBindVertexArray(0);
+    return vao;
 }
 
 // Unit check `expand_quad` (checkpoints.json): the quad a b c d as the
@@ -102,15 +173,10 @@ float wrap_degrees(float a) {
 class PipelineLab : public fw::Lab {
 public:
     static fw::LabInfo info() {
-        std::vector<std::string> primitives;
-        for (const PrimitiveMode& m : kPrimitiveModes) primitives.push_back(m.name);
         fw::LabInfo i;
-        i.number = 0;
-        i.id = "pipeline";
-        i.dir = "00_pipeline";
         i.title = "What the pipeline does to triangles";
         i.params = {
-            fw::Param::choice("scene", {"order", "indexed", "primitives", "culling"}, "order")
+            fw::Param::choice("scene", kScenes, Scene::Order)
                 .help("order: two quads and the depth test; indexed: an indexed face set; "
                       "primitives: 6 vertices in each primitive mode; culling: a cube")
                 .key('S'),
@@ -118,16 +184,16 @@ public:
                 .help("keep the nearest fragment (GL_LESS) instead of the last drawn (order, "
                       "culling)")
                 .key('D'),
-            fw::Param::choice("first", {"red", "blue"}, "red")
+            fw::Param::choice("first", kFirsts, First::Red)
                 .help("which quad is drawn first (order)")
                 .key('F'),
-            fw::Param::choice("storage", {"indexed", "flat"}, "indexed")
+            fw::Param::choice("storage", kStorages, Storage::Indexed)
                 .help("6 vertices + 12 indices, or the 12 vertices they expand to (indexed)")
                 .key('I'),
-            fw::Param::choice("primitive", primitives, "triangles")
+            fw::Param::choice("primitive", kPrimitives, Primitive::Triangles)
                 .help("how the 6 vertices are assembled (primitives)")
                 .key('P'),
-            fw::Param::choice("cull", {"none", "back", "front"}, "back")
+            fw::Param::choice("cull", kCulls, Cull::Back)
                 .help("which faces are culled; front faces are counter-clockwise (culling)")
                 .key('C'),
             fw::Param::number("yaw", 30)
@@ -149,28 +215,29 @@ public:
     }
 
     void init(fw::ProgramLibrary& programs) override {
-        program_ = &programs.load({"00_pipeline/pipeline.vert", "00_pipeline/pipeline.frag"});
-        const fw::VertexLayout layout = fw::VertexLayout::of<Vertex>()
-                                            .attr(kPositionLocation, &Vertex::position)
-                                            .attr(kColorLocation, &Vertex::color);
+        program_ = &programs.load({"pipeline.vert", "pipeline.frag"});
 
         quad_vbo_ = fw::Buffer::from(order_quads(), GL_ARRAY_BUFFER, "order quads");
-        quads_ = fw::VertexArray({&quad_vbo_, layout, nullptr, GL_UNSIGNED_INT, "order quads"});
+        quads_ = make_vertex_array("order quads", quad_vbo_, nullptr);
 
         // The same 6 vertices serve scene=indexed (through the indices) and
         // scene=primitives (in their own order, without the indices).
-        std::vector<Vertex> vertices = face_set_vertices();
-        std::vector<GLuint> indices = face_set_indices();
+        const std::vector<Vertex> vertices = face_set_vertices();
+        const std::vector<GLuint> indices = face_set_indices();
+        face_vertex_count_ = static_cast<GLsizei>(vertices.size());
+        face_index_count_ = static_cast<GLsizei>(indices.size());
         face_vbo_ = fw::Buffer::from(vertices, GL_ARRAY_BUFFER, "face set vertices");
         face_ibo_ = fw::Buffer::from(indices, GL_ELEMENT_ARRAY_BUFFER, "face set indices");
-        faces_ = fw::VertexArray({&face_vbo_, layout, &face_ibo_, GL_UNSIGNED_INT, "face set"});
+        faces_ = make_vertex_array("face set", face_vbo_, &face_ibo_);
         flat_vbo_ =
             fw::Buffer::from(expand_indices(vertices, indices), GL_ARRAY_BUFFER, "face set, flat");
-        flat_ = fw::VertexArray({&flat_vbo_, layout, nullptr, GL_UNSIGNED_INT, "face set, flat"});
+        flat_ = make_vertex_array("face set, flat", flat_vbo_, nullptr);
 
+        const std::vector<GLuint> cube_index_list = cube_indices();
+        cube_index_count_ = static_cast<GLsizei>(cube_index_list.size());
         cube_vbo_ = fw::Buffer::from(cube_vertices(), GL_ARRAY_BUFFER, "cube vertices");
-        cube_ibo_ = fw::Buffer::from(cube_indices(), GL_ELEMENT_ARRAY_BUFFER, "cube indices");
-        cube_ = fw::VertexArray({&cube_vbo_, layout, &cube_ibo_, GL_UNSIGNED_INT, "cube"});
+        cube_ibo_ = fw::Buffer::from(cube_index_list, GL_ELEMENT_ARRAY_BUFFER, "cube indices");
+        cube_ = make_vertex_array("cube", cube_vbo_, &cube_ibo_);
     }
 
     void draw(const fw::ParamValues& p, const fw::Frame& frame) override {
@@ -181,30 +248,38 @@ public:
         program_->use();
         program_->set(kMvpUniform, glm::mat4(1.0f));
 
-        const std::string& scene = p.choice("scene");
-        if (scene == "order") {
-            set_depth_test(p.flag("depth_test"));
-            const bool red_first = p.choice("first") == "red";
-            quads_.draw(GL_TRIANGLES, kQuadVertices, red_first ? kRedQuadFirst : kBlueQuadFirst);
-            quads_.draw(GL_TRIANGLES, kQuadVertices, red_first ? kBlueQuadFirst : kRedQuadFirst);
-        } else if (scene == "indexed") {
-            if (p.choice("storage") == "indexed")
-                faces_.draw_indexed(GL_TRIANGLES, static_cast<GLsizei>(faces_.index_count()));
-            else
-                flat_.draw(GL_TRIANGLES, static_cast<GLsizei>(flat_.vertex_count()));
-        } else if (scene == "primitives") {
-            const GLenum mode = kPrimitiveModes[p.choice_index("primitive")].mode;
-            faces_.draw(mode, static_cast<GLsizei>(faces_.vertex_count()));
-        } else {
-            draw_cube(p, frame);
+        switch (p.get<Scene>("scene")) {
+            case Scene::Order: {
+                set_depth_test(p.flag("depth_test"));
+                const bool red_first = p.get<First>("first") == First::Red;
+                glBindVertexArray(quads_.id());
+                glDrawArrays(GL_TRIANGLES, red_first ? kRedQuadFirst : kBlueQuadFirst,
+                             kQuadVertices);
+                glDrawArrays(GL_TRIANGLES, red_first ? kBlueQuadFirst : kRedQuadFirst,
+                             kQuadVertices);
+                break;
+            }
+            case Scene::Indexed:
+                draw_face_set(p.get<Storage>("storage"), faces_, flat_, face_index_count_);
+                break;
+            case Scene::Primitives:
+                // The 6 vertices in their own order, assembled in the chosen mode.
+                glBindVertexArray(faces_.id());
+                glDrawArrays(static_cast<GLenum>(p.get<Primitive>("primitive")), 0,
+                             face_vertex_count_);
+                break;
+            case Scene::Culling:
+                draw_cube(p, frame);
+                break;
         }
+        glBindVertexArray(0);
     }
 
     // scene=indexed: the bytes each storage needs, e.g. {"storage": "indexed",
     // "vertex_bytes": 144, "index_bytes": 48, "total_bytes": 192, "indexed":
     // {...}, "flat": {...}}.
-    nlohmann::json stats(const fw::ParamValues& p) const override {
-        if (p.choice("scene") != "indexed") return nlohmann::json::object();
+    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
+        if (p.get<Scene>("scene") != Scene::Indexed) return nlohmann::json::object();
         auto bytes = [](std::size_t vertex_bytes, std::size_t index_bytes) {
             return nlohmann::json{{"vertex_bytes", vertex_bytes},
                                   {"index_bytes", index_bytes},
@@ -212,15 +287,15 @@ public:
         };
         const nlohmann::json indexed = bytes(face_vbo_.size(), face_ibo_.size());
         const nlohmann::json flat = bytes(flat_vbo_.size(), 0);
-        nlohmann::json out = p.choice("storage") == "flat" ? flat : indexed;
-        out["storage"] = p.choice("storage");
+        nlohmann::json out = p.get<Storage>("storage") == Storage::Flat ? flat : indexed;
+        out["storage"] = p.text("storage");
         out["indexed"] = indexed;
         out["flat"] = flat;
         return out;
     }
 
-    bool on_drag(fw::ParamValues& p, double dx, double dy) override {
-        if (p.choice("scene") != "culling") return false;
+    bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {
+        if (p.get<Scene>("scene") != Scene::Culling) return false;
         p.number_ref("yaw") = wrap_degrees(p.number("yaw") + 0.5f * static_cast<float>(dx));
         p.number_ref("pitch") = wrap_degrees(p.number("pitch") + 0.5f * static_cast<float>(dy));
         return true;
@@ -238,13 +313,15 @@ private:
         program_->set(kMvpUniform, projection * view * model);
 
         set_depth_test(p.flag("depth_test"));
-        set_culling(p.choice("cull"));
-        cube_.draw_indexed(GL_TRIANGLES, static_cast<GLsizei>(cube_.index_count()));
+        set_culling(p.get<Cull>("cull"));
+        glBindVertexArray(cube_.id());
+        glDrawElements(GL_TRIANGLES, cube_index_count_, GL_UNSIGNED_INT, nullptr);
     }
 
     fw::Program* program_ = nullptr;
     fw::Buffer quad_vbo_, face_vbo_, face_ibo_, flat_vbo_, cube_vbo_, cube_ibo_;
     fw::VertexArray quads_, faces_, flat_, cube_;
+    GLsizei face_vertex_count_ = 0, face_index_count_ = 0, cube_index_count_ = 0;
 };
 
 FW_LAB(PipelineLab)

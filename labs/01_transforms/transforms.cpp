@@ -8,22 +8,20 @@
 // GL: uniform mat4 (glProgramUniformMatrix4fv), glDrawArrays.
 // Student parts (marked TODO): translate, scale,
 // rotateX/Y/Z, rotate and compose in transforms_math.cpp.
-#include <algorithm>
-#include <iterator>
+#include <array>
 #include <string>
 #include <vector>
 
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
 #include "transforms_math.hpp"
+// A_POSITION: the attribute location, shared with transforms.vert.
+#include "shared.glsl"
 
 namespace transforms {
 
 namespace {
 
-// The same number as `layout(location = 0)` in shaders/01_transforms/
-// transforms.vert: change both or neither.
-constexpr GLuint kPositionLocation = 0;  // in vec2 a_position
 constexpr const char* kProjectionUniform = "u_projection";
 constexpr const char* kModelUniform = "u_model";
 constexpr const char* kColorUniform = "u_color";
@@ -63,9 +61,16 @@ std::vector<Vertex> squares() {
     return v;
 }
 
+// The `order` parameter's choices: Order's values named by kOrders.
+constexpr std::array<fw::Choice<Order>, kOrderCount> order_choices() {
+    std::array<fw::Choice<Order>, kOrderCount> choices{};
+    for (int i = 0; i < kOrderCount; ++i) choices[i] = {static_cast<Order>(i), kOrders[i]};
+    return choices;
+}
+
 glm::mat4 model_of(const fw::ParamValues& p) {
     return model_matrix(p.number("tx"), p.number("ty"), p.number("angle"), p.number("sx"),
-                        p.number("sy"), p.choice_index("order"));
+                        p.number("sy"), static_cast<int>(p.get<Order>("order")));
 }
 
 }  // namespace
@@ -74,11 +79,7 @@ class TransformsLab : public fw::Lab {
 public:
     static fw::LabInfo info() {
         fw::LabInfo i;
-        i.number = 1;
-        i.id = "transforms";
-        i.dir = "01_transforms";
         i.title = "Homogeneous coordinates and composition";
-        const std::vector<std::string> orders(std::begin(kOrders), std::end(kOrders));
         auto coordinate = [](const char* name, const char* h, int k) {
             return fw::Param::number(name, 0).range(-2, 2).step(0.25).unit("world").help(h).key(k);
         };
@@ -96,7 +97,7 @@ public:
                 .key('A'),
             factor("sx", "scale S along x (negative mirrors)", 'U'),
             factor("sy", "scale S along y (negative mirrors)", 'V'),
-            fw::Param::choice("order", orders, "trs")
+            fw::Param::choice("order", order_choices(), Order::Trs)
                 .help("M is the product of T, R and S in this order, left to right: trs is "
                       "M = T R S (S acts first)")
                 .key('O'),
@@ -116,16 +117,16 @@ public:
     }
 
     void init(fw::ProgramLibrary& programs) override {
-        program_ =
-            &programs.load({"01_transforms/transforms.vert", "01_transforms/transforms.frag"});
+        program_ = &programs.load({"transforms.vert", "transforms.frag"});
         vbo_ = fw::Buffer::from(squares(), GL_ARRAY_BUFFER, "square and marker");
-        squares_ = fw::VertexArray(
-            {&vbo_, fw::VertexLayout::of<Vertex>().attr(kPositionLocation, &Vertex::position),
-             nullptr, GL_UNSIGNED_INT, "square and marker"});
+        squares_ = fw::VertexArray({
+            .vertices = &vbo_,
+            .layout = fw::VertexLayout::of<Vertex>().attr(A_POSITION, &Vertex::position),
+            .label = "square and marker",
+        });
     }
 
-    void draw(const fw::ParamValues& p, const fw::Frame& frame) override {
-        frame_ = frame;
+    void draw(const fw::ParamValues& p, const fw::Frame&) override {
         // Later draws cover earlier ones: the reference, then the object.
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_CULL_FACE);
@@ -145,38 +146,34 @@ public:
 
     // M row by row and where it puts the marker's centre, e.g.
     // {"order": "trs", "model_rows": [[1,0,0,0], ...], "marker_centre": [0.375, 0.375]}.
-    nlohmann::json stats(const fw::ParamValues& p) const override {
+    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
         const glm::mat4 m = model_of(p);
         nlohmann::json rows = nlohmann::json::array();
         for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
         const glm::vec4 centre = m * glm::vec4(kMarkerCentre, 0.0f, 1.0f);
-        return {{"order", p.choice("order")},
+        return {{"order", p.text("order")},
                 {"model_rows", rows},
                 {"marker_centre", {centre.x, centre.y}}};
     }
 
-    // Dragging moves the object with the mouse: a pixel is 4 / width world units.
-    bool on_drag(fw::ParamValues& p, double dx, double dy) override {
+    // Dragging moves the object with the mouse: a pixel is 4 / width world
+    // units. Each parameter stays in its declared range.
+    bool on_drag(fw::ParamValues& p, const fw::Frame& frame, double dx, double dy) override {
         const double world = 2.0 * kWorldHalfSize;
-        move(p, "tx", dx * world / frame_.width, -kWorldHalfSize, kWorldHalfSize);
-        move(p, "ty", dy * world / frame_.height, -kWorldHalfSize, kWorldHalfSize);
+        p.set_clamped("tx", p.number("tx") + dx * world / frame.width);
+        p.set_clamped("ty", p.number("ty") + dy * world / frame.height);
         return true;
     }
 
-    bool on_scroll(fw::ParamValues& p, double steps) override {
-        move(p, "angle", 15.0 * steps, -360.0, 360.0);
+    bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
+        p.set_clamped("angle", p.number("angle") + 15.0 * steps);
         return true;
     }
 
 private:
-    static void move(fw::ParamValues& p, const char* name, double by, double lo, double hi) {
-        p.number_ref(name) = std::clamp(p.number_ref(name) + by, lo, hi);
-    }
-
     fw::Program* program_ = nullptr;
     fw::Buffer vbo_;
     fw::VertexArray squares_;
-    fw::Frame frame_;
 };
 
 FW_LAB(TransformsLab)

@@ -12,9 +12,11 @@
 namespace transforms {
 
 // The values of the `order` parameter, in the order it lists them: the six
-// permutations of "trs". model_matrix() takes an index into this list.
+// permutations of "trs". model_matrix() takes an index into this list, the
+// value of the enum Order.
 constexpr int kOrderCount = 6;
 constexpr const char* kOrders[kOrderCount] = {"trs", "tsr", "rts", "rst", "str", "srt"};
+enum class Order { Trs, Tsr, Rts, Rst, Str, Srt };
 
 // glm::mat4(...) takes its 16 numbers column by column; from_rows() takes them
 // row by row, as a matrix is written on paper and on the slides.

@@ -5,8 +5,9 @@
 // turn at the shoulder carries the hand and the fingers along.
 // Lecture: the robot arm of the transformations deck (S := S N, J = S T,
 // H = J R), composition order, local versus world frames.
-// GL: one vertex buffer holding every part, glDrawArrays with a first vertex,
-// a mat4 and a vec3 uniform per draw, orthographic projection.
+// GL: one vertex buffer holding every part, glBindVertexArray and
+// glDrawArrays with a first vertex, a mat4 and a vec3 uniform per draw,
+// orthographic projection.
 // Student part (marked TODO): arm_matrices() in
 // arm.cpp.
 #include <cmath>
@@ -20,13 +21,13 @@
 #include "framework/gl.hpp"
 #include "framework/json_glm.hpp"
 #include "framework/lab.hpp"
+// A_POSITION: the attribute location, shared with arm.vert.
+#include "shared.glsl"
 
 namespace robot_arm {
 
 namespace {
 
-// The same number as `layout(location = 0)` in shaders/02_robot_arm/arm.vert.
-constexpr GLuint kPositionLocation = 0;  // in vec2 a_position
 constexpr const char* kMvpUniform = "u_mvp";
 constexpr const char* kColorUniform = "u_color";
 
@@ -90,9 +91,6 @@ class RobotArmLab : public fw::Lab {
 public:
     static fw::LabInfo info() {
         fw::LabInfo i;
-        i.number = 2;
-        i.id = "robot-arm";
-        i.dir = "02_robot_arm";
         i.title = "The hierarchy S, J = S T, H = J R";
         i.params = {
             fw::Param::number("shoulder", 30)
@@ -123,7 +121,7 @@ public:
     }
 
     void init(fw::ProgramLibrary& programs) override {
-        program_ = &programs.load({"02_robot_arm/arm.vert", "02_robot_arm/arm.frag"});
+        program_ = &programs.load({"arm.vert", "arm.frag"});
         // Every part designed at the origin, pointing along +x (README.md).
         std::vector<Vertex> v;
         base_ = add_disc(v, kBaseRadius, kBaseSegments, kBaseColor);
@@ -131,9 +129,11 @@ public:
         hand_ = add_box(v, 0.0f, 1.0f, -0.15f, 0.15f, {0.2f, 0.9f, 0.3f});
         finger_ = add_box(v, 0.0f, 0.6f, -0.05f, 0.05f, {1.0f, 0.6f, 0.1f});
         vbo_ = fw::Buffer::from(v, GL_ARRAY_BUFFER, "robot arm parts");
-        parts_ = fw::VertexArray(
-            {&vbo_, fw::VertexLayout::of<Vertex>().attr(kPositionLocation, &Vertex::position),
-             nullptr, GL_UNSIGNED_INT, "robot arm parts"});
+        parts_ = fw::VertexArray({
+            .vertices = &vbo_,
+            .layout = fw::VertexLayout::of<Vertex>().attr(A_POSITION, &Vertex::position),
+            .label = "robot arm parts",
+        });
     }
 
     void draw(const fw::ParamValues& p, const fw::Frame&) override {
@@ -152,7 +152,7 @@ public:
     // Where the joints land in the world, to check against pencil and paper:
     // the elbow J * (0, 0), the fingers' root H * (1, 0), each finger's tip
     // F * (0.6, 0).
-    nlohmann::json stats(const fw::ParamValues& p) const override {
+    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
         const std::vector<glm::mat4> m = pose(p);
         auto json = [](glm::vec2 v) { return fw::to_json_value(v); };
         return {{"shoulder", json(place(m[kS], 0.0f, 0.0f))},
@@ -162,16 +162,16 @@ public:
                 {"lower_tip", json(place(m[kLowerFinger], 0.6f, 0.0f))}};
     }
 
-    bool on_drag(fw::ParamValues& p, double dx, double dy) override {
+    bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {
         // Half a degree per pixel; the shoulder turns round and round, the
-        // hand stops at its limits.
+        // hand stops at the ends of its range.
         p.number_ref("shoulder") = std::remainder(p.number("shoulder") + 0.5 * dx, 360.0);
-        p.number_ref("hand") = glm::clamp(p.number("hand") + 0.5 * dy, -150.0, 150.0);
+        p.set_clamped("hand", p.number("hand") + 0.5 * dy);
         return true;
     }
 
-    bool on_scroll(fw::ParamValues& p, double steps) override {
-        p.number_ref("grip") = glm::clamp(p.number("grip") + 5.0 * steps, 0.0, 90.0);
+    bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
+        p.set_clamped("grip", p.number("grip") + 5.0 * steps);
         return true;
     }
 
@@ -179,7 +179,9 @@ private:
     void draw_part(const Part& part, const glm::mat4& model) {
         program_->set(kMvpUniform, kProjection * model);
         program_->set(kColorUniform, part.color);
-        parts_.draw(part.mode, part.count, part.first);
+        // Every part lives in the one vertex buffer: `first` says where.
+        glBindVertexArray(parts_.id());
+        glDrawArrays(part.mode, part.first, part.count);
     }
 
     fw::Program* program_ = nullptr;

@@ -20,14 +20,21 @@
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
 #include "scene.hpp"
+// A_POSITION: the attribute location, shared with projection.vert.
+#include "shared.glsl"
 
 namespace projection {
 
 namespace {
 
-// The same number as `layout(location = 0)` in shaders/03_projection/
-// projection.vert: change both or neither.
-constexpr GLuint kPositionLocation = 0;
+// The choices of `scene`, `show` and `mode`.
+constexpr fw::Choice<Scene> kScenes[] = {{Scene::Cards, "cards"}, {Scene::ZFight, "zfight"}};
+enum class Show { Color, Depth };
+constexpr fw::Choice<Show> kShows[] = {{Show::Color, "color"}, {Show::Depth, "depth"}};
+enum class Mode { Perspective, Orthographic };
+constexpr fw::Choice<Mode> kModes[] = {{Mode::Perspective, "perspective"},
+                                       {Mode::Orthographic, "orthographic"}};
+
 // Uniforms of projection.vert (the matrices) and projection.frag.
 constexpr const char* kModelUniform = "u_model";
 constexpr const char* kViewUniform = "u_view";
@@ -53,17 +60,11 @@ glm::mat4 view_matrix(const fw::ParamValues& p) {
 // s = ortho_size and the half-width s * W/H, so that squares stay square.
 glm::mat4 projection_matrix(const fw::ParamValues& p, float aspect) {
     const float n = p.number("near"), f = p.number("far");
-    if (p.choice("mode") == "orthographic") {
+    if (p.get<Mode>("mode") == Mode::Orthographic) {
         const float s = p.number("ortho_size");
         return orthographic(-s * aspect, s * aspect, -s, s, n, f);
     }
     return perspective(p.number("fov"), aspect, n, f);
-}
-
-// Sets a parameter to `value` clamped to its declared range.
-void set_clamped(fw::ParamValues& p, const std::string& name, double value) {
-    for (const fw::Param& param : p.params())
-        if (param.name == name) p.number_ref(name) = std::clamp(value, param.min, param.max);
 }
 
 fw::Param coordinate(const std::string& name, double def, const std::string& what, int key) {
@@ -76,20 +77,17 @@ class ProjectionLab : public fw::Lab {
 public:
     static fw::LabInfo info() {
         fw::LabInfo i;
-        i.number = 3;
-        i.id = "projection";
-        i.dir = "03_projection";
         i.title = "Camera, perspective and the depth buffer";
         i.params = {
-            fw::Param::choice("scene", {"cards", "zfight"}, "cards")
+            fw::Param::choice("scene", kScenes, Scene::Cards)
                 .help("cards: five squares at distances 2 to 32; zfight: two tilted quads "
                       "0.002 apart, 20 units away")
                 .key('S'),
-            fw::Param::choice("show", {"color", "depth"}, "color")
+            fw::Param::choice("show", kShows, Show::Color)
                 .help("each square's colour, or its linearised depth as grey (near black, "
                       "far white)")
                 .key('D'),
-            fw::Param::choice("mode", {"perspective", "orthographic"}, "perspective")
+            fw::Param::choice("mode", kModes, Mode::Perspective)
                 .help("perspective(fov, W/H, near, far) or orthographic(-s W/H, s W/H, -s, s, "
                       "near, far), s = ortho_size")
                 .key('M'),
@@ -134,16 +132,16 @@ public:
     }
 
     void init(fw::ProgramLibrary& programs) override {
-        program_ =
-            &programs.load({"03_projection/projection.vert", "03_projection/projection.frag"});
+        program_ = &programs.load({"projection.vert", "projection.frag"});
         square_vbo_ = fw::Buffer::from(unit_square(), GL_ARRAY_BUFFER, "unit square");
-        const fw::VertexLayout layout =
-            fw::VertexLayout::of<Vertex>().attr(kPositionLocation, &Vertex::position);
-        square_ = fw::VertexArray({&square_vbo_, layout, nullptr, GL_UNSIGNED_INT, "unit square"});
+        square_ = fw::VertexArray({
+            .vertices = &square_vbo_,
+            .layout = fw::VertexLayout::of<Vertex>().attr(A_POSITION, &Vertex::position),
+            .label = "unit square",
+        });
     }
 
     void draw(const fw::ParamValues& p, const fw::Frame& frame) override {
-        frame_ = frame;
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
@@ -152,11 +150,11 @@ public:
         program_->use();
         program_->set(kViewUniform, view_matrix(p));
         program_->set(kProjectionUniform, projection_matrix(p, aspect));
-        program_->set(kShowDepthUniform, p.choice("show") == "depth");
-        program_->set(kOrthographicUniform, p.choice("mode") == "orthographic");
+        program_->set(kShowDepthUniform, p.get<Show>("show") == Show::Depth);
+        program_->set(kOrthographicUniform, p.get<Mode>("mode") == Mode::Orthographic);
         program_->set(kNearUniform, p.number("near"));
         program_->set(kFarUniform, p.number("far"));
-        for (const Object& object : scene_objects(p.choice("scene"))) {
+        for (const Object& object : scene_objects(p.get<Scene>("scene"))) {
             program_->set(kModelUniform, object.model);
             program_->set(kColorUniform, object.color);
             square_.draw(GL_TRIANGLES, static_cast<GLsizei>(square_.vertex_count()));
@@ -166,14 +164,14 @@ public:
     // Where each square's centre went, through your matrices and viewport():
     // {"centres": [{"object": "red", "clip": [x, y, z, w], "window": [x, y, depth]}, ...]}.
     // Compare "window" with the PNG (pixels) and the --depth-out PFM (depth).
-    nlohmann::json stats(const fw::ParamValues& p) const override {
-        const float aspect = static_cast<float>(frame_.width) / static_cast<float>(frame_.height);
+    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame& frame) const override {
+        const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
         const glm::mat4 clip_from_world = projection_matrix(p, aspect) * view_matrix(p);
         nlohmann::json centres = nlohmann::json::array();
-        for (const Object& object : scene_objects(p.choice("scene"))) {
+        for (const Object& object : scene_objects(p.get<Scene>("scene"))) {
             const glm::vec4 clip = clip_from_world * object.model * glm::vec4(0, 0, 0, 1);
             const glm::vec3 window =
-                viewport(glm::vec3(clip) / clip.w, frame_.width, frame_.height);
+                viewport(glm::vec3(clip) / clip.w, frame.width, frame.height);
             centres.push_back({{"object", object.name},
                                {"clip", {clip.x, clip.y, clip.z, clip.w}},
                                {"window", {window.x, window.y, window.z}}});
@@ -201,7 +199,7 @@ public:
     // Dragging right turns the scene right (the eye moves left); the
     // elevation stops short of the poles, where the view would be parallel
     // to up.
-    bool on_drag(fw::ParamValues& p, double dx, double dy) override {
+    bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {
         const glm::dvec3 target = vec3_param(p, "target");
         const glm::dvec3 offset = glm::dvec3(vec3_param(p, "eye")) - target;
         const double r = glm::length(offset);
@@ -211,15 +209,15 @@ public:
         const glm::dvec3 eye =
             target + r * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
                                     std::cos(pitch) * std::cos(yaw));
-        set_clamped(p, "eye_x", eye.x);
-        set_clamped(p, "eye_y", eye.y);
-        set_clamped(p, "eye_z", eye.z);
+        p.set_clamped("eye_x", eye.x);
+        p.set_clamped("eye_y", eye.y);
+        p.set_clamped("eye_z", eye.z);
         return true;
     }
 
     // The wheel zooms: up narrows the field of view by 5 degrees a step.
-    bool on_scroll(fw::ParamValues& p, double steps) override {
-        set_clamped(p, "fov", p.number("fov") - 5.0 * steps);
+    bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
+        p.set_clamped("fov", p.number("fov") - 5.0 * steps);
         return true;
     }
 
@@ -227,7 +225,6 @@ private:
     fw::Program* program_ = nullptr;
     fw::Buffer square_vbo_;
     fw::VertexArray square_;
-    fw::Frame frame_;  // the last frame drawn, for stats()
 };
 
 FW_LAB(ProjectionLab)

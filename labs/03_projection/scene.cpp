@@ -55,11 +55,13 @@ std::vector<Vertex> unit_square() {
     return {{{-1, -1, 0}}, {{1, -1, 0}}, {{1, 1, 0}}, {{-1, -1, 0}}, {{1, 1, 0}}, {{-1, 1, 0}}};
 }
 
-std::vector<Object> scene_objects(const std::string& scene) {
-    if (scene == "cards") return cards();
-    if (scene == "zfight") return zfight_quads();
-    throw fw::UsageError("lab projection: unknown scene '" + scene +
-                         "'; the scenes are: cards, zfight");
+std::vector<Object> scene_objects(Scene scene) {
+    switch (scene) {
+        case Scene::Cards: return cards();
+        case Scene::ZFight: return zfight_quads();
+    }
+    throw fw::Error("lab projection: scene " + std::to_string(static_cast<int>(scene)) +
+                    " is not a Scene");
 }
 
 }  // namespace projection

@@ -29,7 +29,8 @@ struct Object {
 // scene=zfight: a red quad and, 0.002 behind it along its normal, a blue one
 // (drawn first), both 16 x 16 and tilted by 30 degrees about x (the top
 // leans away), the red one centred at (0, 0, -20).
-// Throws fw::UsageError for any other scene name.
-std::vector<Object> scene_objects(const std::string& scene);
+// The `scene` parameter's values.
+enum class Scene { Cards, ZFight };
+std::vector<Object> scene_objects(Scene scene);
 
 }  // namespace projection

@@ -7,9 +7,12 @@
 // distances) that no vertex shader could compute.
 // Lecture: geometry shaders (the pass-through and duplicating examples),
 // face normals from cross products, Lambert shading.
-// GL: GL_GEOMETRY_SHADER (layout(triangles) in, layout(triangle_strip /
-// line_strip, max_vertices = N) out), noperspective interpolation,
-// GL_PRIMITIVES_GENERATED (counts what the geometry shader emits).
+// GL: glEnable(GL_DEPTH_TEST / GL_CULL_FACE), glDepthFunc, glFrontFace,
+// glCullFace, glBindVertexArray, glDrawElements (GL_TRIANGLES, each triangle
+// handed whole to the geometry shader), GL_GEOMETRY_SHADER (layout(triangles)
+// in, layout(triangle_strip / line_strip, max_vertices = N) out),
+// noperspective interpolation, GL_PRIMITIVES_GENERATED (counts what the
+// geometry shader emits).
 // Student parts (marked TODO): the geometry
 // shaders shaders/04_geometry/duplicate.geom, explode.geom, normals.geom and
 // the edge distances in wireframe.geom.
@@ -22,15 +25,33 @@
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
 #include "framework/meshes.hpp"
+// A_POSITION, A_NORMAL: attribute locations, shared with mesh.vert.
+#include "shared.glsl"
 
 namespace geometry {
 
 namespace {
 
-// Vertex attribute locations, the same numbers as `layout(location = ...)`
-// in shaders/04_geometry/mesh.vert: change both or neither.
-constexpr GLuint kPositionLocation = 0;  // in vec3 a_position
-constexpr GLuint kNormalLocation = 1;    // in vec3 a_normal
+// The shaders' uniforms.
+constexpr const char* kModelUniform = "u_model";                     // mesh.vert
+constexpr const char* kViewProjectionUniform = "u_view_projection";  // mesh.vert, the .geom
+constexpr const char* kColorUniform = "u_color";                     // the .geom, line.frag
+constexpr const char* kLightDirUniform = "u_light_dir";              // lambert.frag, wireframe.frag
+constexpr const char* kOffsetUniform = "u_offset";                   // duplicate.geom
+constexpr const char* kTintUniform = "u_tint";                       // duplicate.geom
+constexpr const char* kAmountUniform = "u_amount";                   // explode.geom
+constexpr const char* kLengthUniform = "u_length";                   // normals.geom
+constexpr const char* kViewportUniform = "u_viewport";               // wireframe.geom
+constexpr const char* kEdgeColorUniform = "u_edge_color";            // wireframe.frag
+
+// The values of `mode`: draw() switches on the enum; the names are what
+// --set, checkpoints.json and the window's panel use.
+enum class Mode { Passthrough, Duplicate, Explode, Normals, Wireframe };
+constexpr fw::Choice<Mode> kModes[] = {{Mode::Passthrough, "passthrough"},
+                                       {Mode::Duplicate, "duplicate"},
+                                       {Mode::Explode, "explode"},
+                                       {Mode::Normals, "normals"},
+                                       {Mode::Wireframe, "wireframe"}};
 
 constexpr int kMaxSubdiv = 5;
 
@@ -56,28 +77,15 @@ struct Mesh {
     fw::VertexArray vao;
 };
 
-// Uniforms read only by the student parts. A GLSL compiler removes a uniform
-// that the shader never reads, and fw::Program::set() refuses a uniform the
-// program lacks; until the part that reads it is written, it is not set.
-template <class T>
-void set_student_uniform(const fw::Program& program, const char* name, const T& value) {
-    if (program.has_uniform(name)) program.set(name, value);
-}
-
 }  // namespace
 
 class GeometryLab : public fw::Lab {
 public:
     static fw::LabInfo info() {
         fw::LabInfo i;
-        i.number = 4;
-        i.id = "geometry";
-        i.dir = "04_geometry";
         i.title = "Geometry shaders";
         i.params = {
-            fw::Param::choice("mode",
-                              {"passthrough", "duplicate", "explode", "normals", "wireframe"},
-                              "passthrough")
+            fw::Param::choice("mode", kModes, Mode::Passthrough)
                 .help("passthrough: re-emit each triangle; duplicate: add a moved, tinted copy; "
                       "explode: move each triangle along its face normal; normals: draw vertex "
                       "normals as lines; wireframe: edges from distances in the same pass")
@@ -123,9 +131,9 @@ public:
     }
 
     void init(fw::ProgramLibrary& programs) override {
+        // File names within shaders/04_geometry/.
         auto load = [&](const char* geom, const char* frag) {
-            return &programs.load({"04_geometry/mesh.vert", std::string("04_geometry/") + geom,
-                                   std::string("04_geometry/") + frag});
+            return &programs.load({"mesh.vert", geom, frag});
         };
         passthrough_ = load("passthrough.geom", "lambert.frag");
         duplicate_ = load("duplicate.geom", "lambert.frag");
@@ -134,8 +142,8 @@ public:
         wireframe_ = load("wireframe.geom", "wireframe.frag");
 
         const fw::VertexLayout layout = fw::VertexLayout::of<Vertex>()
-                                            .attr(kPositionLocation, &Vertex::position)
-                                            .attr(kNormalLocation, &Vertex::normal);
+                                            .attr(A_POSITION, &Vertex::position)
+                                            .attr(A_NORMAL, &Vertex::normal);
         for (int level = 0; level <= kMaxSubdiv; ++level) {
             const fw::MeshData data = fw::icosphere(level);
             std::vector<Vertex> vertices;
@@ -145,8 +153,13 @@ public:
             Mesh& mesh = meshes_[level];
             mesh.vertices = fw::Buffer::from(vertices, GL_ARRAY_BUFFER, label + " vertices");
             mesh.indices = fw::Buffer::from(data.indices, GL_ELEMENT_ARRAY_BUFFER, label);
-            mesh.vao =
-                fw::VertexArray({&mesh.vertices, layout, &mesh.indices, GL_UNSIGNED_INT, label});
+            // The vertex array records the layout and the index buffer;
+            // draw() binds it and draws.
+            mesh.vao = fw::VertexArray(fw::VertexArrayDesc{.vertices = &mesh.vertices,
+                                                           .layout = layout,
+                                                           .indices = &mesh.indices,
+                                                           .index_type = GL_UNSIGNED_INT,
+                                                           .label = label});
         }
     }
 
@@ -166,53 +179,68 @@ public:
             glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar) *
             glm::lookAt(kEye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
         for (fw::Program* program : {passthrough_, duplicate_, explode_, normals_, wireframe_}) {
-            program->set("u_model", model);
-            program->set("u_view_projection", view_projection);
+            program->set(kModelUniform, model);
+            program->set(kViewProjectionUniform, view_projection);
         }
 
-        const std::string& mode = p.choice("mode");
+        // The uniforms that only the student parts read are set with
+        // set_if_active(): the compiler removes them until that part is written.
+        const Mode mode = p.get<Mode>("mode");
         fw::Program* shaded = passthrough_;
-        if (mode == "duplicate") {
-            shaded = duplicate_;
-            const glm::vec3 offset{p.number("offset_x"), p.number("offset_y"),
-                                   p.number("offset_z")};
-            // model * (q + offset) = model * q + mat3(model) * offset.
-            set_student_uniform(*shaded, "u_offset", glm::mat3(model) * offset);
-            set_student_uniform(*shaded, "u_tint", kTint);
-        } else if (mode == "explode") {
-            shaded = explode_;
-            set_student_uniform(*shaded, "u_amount", p.number("amount"));
-        } else if (mode == "wireframe") {
-            shaded = wireframe_;
-            set_student_uniform(
-                *shaded, "u_viewport",
-                glm::vec2(static_cast<float>(frame.width), static_cast<float>(frame.height)));
-            shaded->set("u_edge_color", kWhite);
+        switch (mode) {
+            case Mode::Passthrough:
+            case Mode::Normals:  // the sphere as passthrough, then the lines below
+                break;
+            case Mode::Duplicate: {
+                shaded = duplicate_;
+                const glm::vec3 offset{p.number("offset_x"), p.number("offset_y"),
+                                       p.number("offset_z")};
+                // model * (q + offset) = model * q + mat3(model) * offset.
+                shaded->set_if_active(kOffsetUniform, glm::mat3(model) * offset);
+                shaded->set_if_active(kTintUniform, kTint);
+                break;
+            }
+            case Mode::Explode:
+                shaded = explode_;
+                shaded->set_if_active(kAmountUniform, p.number("amount"));
+                break;
+            case Mode::Wireframe:
+                shaded = wireframe_;
+                shaded->set_if_active(
+                    kViewportUniform,
+                    glm::vec2(static_cast<float>(frame.width), static_cast<float>(frame.height)));
+                shaded->set(kEdgeColorUniform, kWhite);
+                break;
         }
-        shaded->set("u_color", kGrey);
-        shaded->set("u_light_dir", kLightDir);
+        shaded->set(kColorUniform, kGrey);
+        shaded->set(kLightDirUniform, kLightDir);
 
+        // The icosphere's triangles, 3 indices each (GL_UNSIGNED_INT, in the
+        // element buffer the vertex array holds): the geometry shader receives
+        // each triangle whole.
         const Mesh& mesh = meshes_[static_cast<std::size_t>(p.integer("subdiv"))];
         const auto index_count = static_cast<GLsizei>(mesh.vao.index_count());
         shaded->use();
-        mesh.vao.draw_indexed(GL_TRIANGLES, index_count);
-        if (mode == "normals") {
-            // The same triangles again, through the geometry shader that
-            // turns each into three lines.
-            normals_->set("u_color", kYellow);
-            set_student_uniform(*normals_, "u_length", p.number("length"));
+        glBindVertexArray(mesh.vao.id());
+        glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+        if (mode == Mode::Normals) {
+            // The same triangles again (the vertex array is still bound),
+            // through the geometry shader that turns each into three lines.
+            normals_->set(kColorUniform, kYellow);
+            normals_->set_if_active(kLengthUniform, p.number("length"));
             normals_->use();
-            mesh.vao.draw_indexed(GL_TRIANGLES, index_count);
+            glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
         }
+        glBindVertexArray(0);
     }
 
     // The mesh's size: {"triangles": 320, "vertices": 162} at subdiv 2.
-    nlohmann::json stats(const fw::ParamValues& p) const override {
+    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
         const Mesh& mesh = meshes_[static_cast<std::size_t>(p.integer("subdiv"))];
         return {{"triangles", mesh.vao.index_count() / 3}, {"vertices", mesh.vao.vertex_count()}};
     }
 
-    bool on_drag(fw::ParamValues& p, double dx, double /*dy*/) override {
+    bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double /*dy*/) override {
         // Half a degree per pixel, wrapped into [-180, 180].
         p.number_ref("spin") = std::remainder(p.number("spin") + 0.5 * dx, 360.0);
         return true;

@@ -10,54 +10,85 @@
 // Lecture: tessellation shaders (control, primitive generator, evaluation),
 // the icosahedron's normalize(p0 + p1 + p2), the waving flag r(u, v), the
 // parametric sphere, normals from the cross product of partial derivatives.
-// GL: GL_PATCHES, glPatchParameteri(GL_PATCH_VERTICES), GL_TESS_CONTROL_SHADER
+// GL: glEnable(GL_DEPTH_TEST), glDepthFunc, glDisable(GL_CULL_FACE),
+// glBindVertexArray, glPatchParameteri(GL_PATCH_VERTICES, 3 or 4),
+// glDrawArrays(GL_PATCHES) and glDrawElements(GL_PATCHES), GL_TESS_CONTROL_SHADER
 // (layout(vertices = N) out, gl_TessLevelInner/Outer), GL_TESS_EVALUATION_SHADER
 // (layout(triangles / quads, *_spacing, ccw) in, gl_TessCoord), a stage linked
 // from several shader objects, GL_PRIMITIVES_GENERATED.
 // Student parts (marked TODO), all GLSL: the
 // levels in shaders/05_tessellation/levels.tesc, the evaluation shaders
 // sphere.tese, flag.tese and param_sphere.tese.
-#include <algorithm>
 #include <array>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-#include <iterator>
 #include <string>
 #include <vector>
 
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
 #include "framework/meshes.hpp"
+// A_POSITION (attribute location, shared with patch.vert) and SHADING_*
+// (values of u_shading, shared with shade.frag).
+#include "shared.glsl"
 
 namespace tessellation {
 
 namespace {
 
-// The vertex attribute location, the same number as `layout(location = 0)`
-// in shaders/05_tessellation/patch.vert: change both or neither.
-constexpr GLuint kPositionLocation = 0;  // in vec3 a_position
+// The shaders' uniforms.
+constexpr const char* kInnerUniform = "u_inner";                     // levels.tesc
+constexpr const char* kOuterUniform = "u_outer";                     // levels.tesc
+constexpr const char* kViewProjectionUniform = "u_view_projection";  // the .tese
+constexpr const char* kFlagWUniform = "u_W";                         // flag.tese
+constexpr const char* kFlagHUniform = "u_H";                         // flag.tese
+constexpr const char* kFlagDUniform = "u_D";                         // flag.tese
+constexpr const char* kFlagKUniform = "u_K";                         // flag.tese
+constexpr const char* kPhaseUniform = "u_phase";                     // flag.tese
+constexpr const char* kViewportUniform = "u_viewport";               // wireframe.geom
+constexpr const char* kShadingUniform = "u_shading";                 // shade.frag
+constexpr const char* kColorUniform = "u_color";                     // shade.frag
+constexpr const char* kLightDirUniform = "u_light_dir";              // shade.frag
+constexpr const char* kWireframeUniform = "u_wireframe";             // shade.frag
+constexpr const char* kEdgeColorUniform = "u_edge_color";            // shade.frag
 
-// How shade.frag colours a fragment: its constants kFill, kLambert, kNormal.
-enum Shading { kFill = 0, kLambert = 1, kNormal = 2 };
+// How shade.frag colours a fragment: each value is the one sent to u_shading.
+enum class Shading { Fill = SHADING_FILL, Lambert = SHADING_LAMBERT, Normal = SHADING_NORMAL };
+
+// The parameters' choices. Each enum is what draw() switches on; the names
+// are what --set, checkpoints.json and the window's panel use.
+// The sheet's scenes: one patch each, except the icosahedron's 20.
+enum class Scene { Triangle, Sphere, Flag, ParamSphere };
+constexpr fw::Choice<Scene> kScenes[] = {{Scene::Triangle, "triangle"},
+                                         {Scene::Sphere, "sphere"},
+                                         {Scene::Flag, "flag"},
+                                         {Scene::ParamSphere, "param_sphere"}};
+// Each spacing names its shader object spacing_<name>.tese.
+enum class Spacing { Equal, FractionalEven, FractionalOdd };
+constexpr fw::Choice<Spacing> kSpacings[] = {{Spacing::Equal, "equal"},
+                                             {Spacing::FractionalEven, "fractional_even"},
+                                             {Spacing::FractionalOdd, "fractional_odd"}};
+enum class Show { Shaded, Normals };
+constexpr fw::Choice<Show> kShows[] = {{Show::Shaded, "shaded"}, {Show::Normals, "normals"}};
+
+// The scene's evaluation shader.
+const char* evaluation_shader(Scene scene) {
+    switch (scene) {
+        case Scene::Triangle:
+            return "flat.tese";
+        case Scene::Sphere:
+            return "sphere.tese";
+        case Scene::Flag:
+            return "flag.tese";
+        case Scene::ParamSphere:
+            return "param_sphere.tese";
+    }
+    return "";
+}
+// Quad patches (4 control points) or triangles (3).
+bool quad_patches(Scene scene) { return scene == Scene::Flag || scene == Scene::ParamSphere; }
 
 constexpr double kMinLevel = 1.0, kMaxLevel = 64.0;
-// The values of `spacing`; each names its shader object spacing_<name>.tese.
-constexpr const char* kSpacings[] = {"equal", "fractional_even", "fractional_odd"};
-constexpr std::size_t kSpacingCount = sizeof(kSpacings) / sizeof(kSpacings[0]);
-
-// The sheet's scenes: one patch each, except the icosahedron's 20.
-struct Scene {
-    const char* name;
-    const char* evaluation;  // the scene's .tese
-    bool quads;              // quad patches (4 control points) or triangles (3)
-};
-constexpr Scene kScenes[] = {
-    {"triangle", "flat.tese", false},
-    {"sphere", "sphere.tese", false},
-    {"flag", "flag.tese", true},
-    {"param_sphere", "param_sphere.tese", true},
-};
-constexpr std::size_t kSceneCount = sizeof(kScenes) / sizeof(kScenes[0]);
 
 // Scene triangle: NDC corners, counter-clockwise, identity matrices.
 const std::vector<glm::vec3> kTriangle = {
@@ -80,13 +111,6 @@ const glm::vec3 kFlagCentre{1.0f, 0.6f, 0.0f};
 // animate: the phase grows by 180 degrees a second in the window.
 constexpr float kWaveSpeed = glm::pi<float>();  // radians per second
 
-// Uniforms read only by the student parts, which the compiler removes until
-// the part that reads them is written; fw::Program::set() refuses those.
-template <class T>
-void set_student_uniform(const fw::Program& program, const char* name, const T& value) {
-    if (program.has_uniform(name)) program.set(name, value);
-}
-
 fw::Param level(const char* name, int key, const char* what) {
     return fw::Param::number(name, 4)
         .range(kMinLevel, kMaxLevel)
@@ -102,28 +126,23 @@ fw::Param level(const char* name, int key, const char* what) {
 class TessellationLab : public fw::Lab {
 public:
     static fw::LabInfo info() {
-        std::vector<std::string> scenes, spacings(std::begin(kSpacings), std::end(kSpacings));
-        for (const Scene& s : kScenes) scenes.push_back(s.name);
         fw::LabInfo i;
-        i.number = 5;
-        i.id = "tessellation";
-        i.dir = "05_tessellation";
         i.title = "Tessellation control and evaluation";
         i.params = {
-            fw::Param::choice("scene", scenes, "triangle")
+            fw::Param::choice("scene", kScenes, Scene::Triangle)
                 .help("triangle: one flat patch; sphere: the icosahedron's 20 faces pushed onto "
                       "the sphere; flag: the waving flag; param_sphere: the parametric sphere")
                 .key('S'),
             level("inner", 'I', "inner"),
             level("outer", 'O', "outer"),
-            fw::Param::choice("spacing", spacings, "equal")
+            fw::Param::choice("spacing", kSpacings, Spacing::Equal)
                 .help("how a level becomes segments: equal rounds up; fractional_even and "
                       "fractional_odd round up to an even or odd count, two segments shorter")
                 .key('P'),
             fw::Param::boolean("wireframe", true)
                 .help("draw the tessellated triangles' edges in white")
                 .key('W'),
-            fw::Param::choice("show", {"shaded", "normals"}, "shaded")
+            fw::Param::choice("show", kShows, Show::Shaded)
                 .help("shaded: fill colour or Lambert; normals: the unit normal n as the colour "
                       "0.5 n + 0.5")
                 .key('N'),
@@ -152,30 +171,37 @@ public:
     }
 
     void init(fw::ProgramLibrary& programs) override {
-        for (std::size_t s = 0; s < kSceneCount; ++s)
-            for (std::size_t k = 0; k < kSpacingCount; ++k) {
-                const std::string dir = "05_tessellation/";
-                programs_[s][k] = &programs.load({
-                    dir + "patch.vert",
-                    dir + "levels.tesc",
-                    dir + (kScenes[s].quads ? "quad.tesc" : "triangle.tesc"),
-                    dir + kScenes[s].evaluation,
-                    dir + "spacing_" + std::string(kSpacings[k]) + ".tese",
-                    dir + "wireframe.geom",
-                    dir + "shade.frag",
+        // File names within shaders/05_tessellation/.
+        for (const fw::Choice<Scene>& scene : kScenes)
+            for (const fw::Choice<Spacing>& spacing : kSpacings)
+                program(scene.value, spacing.value) = &programs.load({
+                    "patch.vert",
+                    "levels.tesc",
+                    quad_patches(scene.value) ? "quad.tesc" : "triangle.tesc",
+                    evaluation_shader(scene.value),
+                    "spacing_" + std::string(spacing.name) + ".tese",
+                    "wireframe.geom",
+                    "shade.frag",
                 });
-            }
 
+        // The vertex arrays record the layout (and the icosahedron's index
+        // buffer); draw() binds one and draws its patches.
         const fw::VertexLayout layout =
-            fw::VertexLayout::of<glm::vec3>().add({kPositionLocation, 3, GL_FLOAT, 0});
+            fw::VertexLayout::of<glm::vec3>().add({A_POSITION, 3, GL_FLOAT, 0});
         triangle_vbo_ = fw::Buffer::from(kTriangle, GL_ARRAY_BUFFER, "triangle patch");
-        triangle_ = fw::VertexArray({&triangle_vbo_, layout, nullptr, GL_UNSIGNED_INT, "triangle"});
+        triangle_ = fw::VertexArray(
+            fw::VertexArrayDesc{.vertices = &triangle_vbo_, .layout = layout, .label = "triangle"});
         quad_vbo_ = fw::Buffer::from(kQuad, GL_ARRAY_BUFFER, "quad patch");
-        quad_ = fw::VertexArray({&quad_vbo_, layout, nullptr, GL_UNSIGNED_INT, "quad"});
+        quad_ = fw::VertexArray(
+            fw::VertexArrayDesc{.vertices = &quad_vbo_, .layout = layout, .label = "quad"});
         const fw::MeshData ico = fw::icosahedron();
         ico_vbo_ = fw::Buffer::from(ico.positions, GL_ARRAY_BUFFER, "icosahedron corners");
         ico_ibo_ = fw::Buffer::from(ico.indices, GL_ELEMENT_ARRAY_BUFFER, "icosahedron faces");
-        ico_ = fw::VertexArray({&ico_vbo_, layout, &ico_ibo_, GL_UNSIGNED_INT, "icosahedron"});
+        ico_ = fw::VertexArray(fw::VertexArrayDesc{.vertices = &ico_vbo_,
+                                                   .layout = layout,
+                                                   .indices = &ico_ibo_,
+                                                   .index_type = GL_UNSIGNED_INT,
+                                                   .label = "icosahedron"});
     }
 
     void draw(const fw::ParamValues& p, const fw::Frame& frame) override {
@@ -183,75 +209,103 @@ public:
         glDepthFunc(GL_LESS);
         glDisable(GL_CULL_FACE);
 
-        const std::size_t scene = static_cast<std::size_t>(p.choice_index("scene"));
-        const std::string& name = kScenes[scene].name;
-        const fw::Program& program =
-            *programs_[scene][static_cast<std::size_t>(p.choice_index("spacing"))];
-        set_student_uniform(program, "u_inner", p.number("inner"));
-        set_student_uniform(program, "u_outer", p.number("outer"));
-        program.set("u_viewport", glm::vec2(frame.width, frame.height));
-        program.set("u_wireframe", p.flag("wireframe"));
-        program.set("u_edge_color", kWhite);
-        program.set("u_light_dir", kLightDir);
+        const Scene scene = p.get<Scene>("scene");
+        const fw::Program& program = *programs_[index(scene)][index(p.get<Spacing>("spacing"))];
+        // The uniforms that only the student parts read are set with
+        // set_if_active(): the compiler removes them until that part is written.
+        program.set_if_active(kInnerUniform, p.number("inner"));
+        program.set_if_active(kOuterUniform, p.number("outer"));
+        program.set(kViewportUniform, glm::vec2(frame.width, frame.height));
+        program.set(kWireframeUniform, p.flag("wireframe"));
+        program.set(kEdgeColorUniform, kWhite);
+        program.set(kLightDirUniform, kLightDir);
 
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
         const glm::mat4 projection =
             glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar);
         const glm::vec3 up{0.0f, 1.0f, 0.0f};
         glm::mat4 view_projection(1.0f);
-        if (name == "flag") {
-            view_projection = projection * glm::lookAt(kFlagEye, kFlagCentre, up);
-            // Offscreen, frame.time is 0: the same parameters draw the same image.
-            const float phase =
-                glm::radians(p.number("phase")) +
-                (p.flag("animate") ? static_cast<float>(frame.time) * kWaveSpeed : 0.0f);
-            set_student_uniform(program, "u_W", kFlagW);
-            set_student_uniform(program, "u_H", kFlagH);
-            set_student_uniform(program, "u_D", p.number("D"));
-            set_student_uniform(program, "u_K", p.number("K"));
-            set_student_uniform(program, "u_phase", phase);
-        } else if (name != "triangle") {
-            view_projection = projection * glm::lookAt(kSphereEye, glm::vec3(0.0f), up);
+        switch (scene) {
+            case Scene::Triangle:  // NDC corners: the identity
+                break;
+            case Scene::Flag: {
+                view_projection = projection * glm::lookAt(kFlagEye, kFlagCentre, up);
+                // Offscreen, frame.time is 0: the same parameters draw the same image.
+                const float phase =
+                    glm::radians(p.number("phase")) +
+                    (p.flag("animate") ? static_cast<float>(frame.time) * kWaveSpeed : 0.0f);
+                program.set_if_active(kFlagWUniform, kFlagW);
+                program.set_if_active(kFlagHUniform, kFlagH);
+                program.set_if_active(kFlagDUniform, p.number("D"));
+                program.set_if_active(kFlagKUniform, p.number("K"));
+                program.set_if_active(kPhaseUniform, phase);
+                break;
+            }
+            case Scene::Sphere:
+            case Scene::ParamSphere:
+                view_projection = projection * glm::lookAt(kSphereEye, glm::vec3(0.0f), up);
+                break;
         }
-        program.set("u_view_projection", view_projection);
-        const bool normals = p.choice("show") == "normals";
-        const Shading shading = normals ? kNormal : name == "triangle" ? kFill : kLambert;
-        program.set("u_shading", static_cast<int>(shading));
-        program.set("u_color", name == "triangle" ? kFillColor : kGrey);
+        program.set(kViewProjectionUniform, view_projection);
+        const bool normals = p.get<Show>("show") == Show::Normals;
+        const Shading shading = normals                    ? Shading::Normal
+                                : scene == Scene::Triangle ? Shading::Fill
+                                                           : Shading::Lambert;
+        program.set(kShadingUniform, static_cast<int>(shading));
+        program.set(kColorUniform, scene == Scene::Triangle ? kFillColor : kGrey);
 
         // A patch is a list of control points with no shape of its own:
-        // GL_PATCH_VERTICES says how many make one.
+        // GL_PATCH_VERTICES says how many make one, and the draw call's
+        // count how many points there are, so count / GL_PATCH_VERTICES patches.
         program.use();
-        if (name == "sphere") {
-            glPatchParameteri(GL_PATCH_VERTICES, 3);
-            ico_.draw_indexed(GL_PATCHES, static_cast<GLsizei>(ico_.index_count()));
-        } else if (kScenes[scene].quads) {
-            glPatchParameteri(GL_PATCH_VERTICES, 4);
-            quad_.draw(GL_PATCHES, static_cast<GLsizei>(quad_.vertex_count()));
-        } else {
-            glPatchParameteri(GL_PATCH_VERTICES, 3);
-            triangle_.draw(GL_PATCHES, static_cast<GLsizei>(triangle_.vertex_count()));
+        switch (scene) {
+            case Scene::Sphere:
+                // 20 patches of 3 corners each, through the icosahedron's 60
+                // indices (GL_UNSIGNED_INT, in the element buffer of ico_).
+                glPatchParameteri(GL_PATCH_VERTICES, 3);
+                glBindVertexArray(ico_.id());
+                glDrawElements(GL_PATCHES, static_cast<GLsizei>(ico_.index_count()),
+                               GL_UNSIGNED_INT, nullptr);
+                break;
+            case Scene::Flag:
+            case Scene::ParamSphere:
+                // One patch of the unit square's 4 corners.
+                glPatchParameteri(GL_PATCH_VERTICES, 4);
+                glBindVertexArray(quad_.id());
+                glDrawArrays(GL_PATCHES, 0, static_cast<GLsizei>(quad_.vertex_count()));
+                break;
+            case Scene::Triangle:
+                // One patch of the triangle's 3 corners.
+                glPatchParameteri(GL_PATCH_VERTICES, 3);
+                glBindVertexArray(triangle_.id());
+                glDrawArrays(GL_PATCHES, 0, static_cast<GLsizei>(triangle_.vertex_count()));
+                break;
         }
+        glBindVertexArray(0);
     }
 
     // The patches drawn and their domain: {"patches": 20, "domain": "triangles"}.
-    nlohmann::json stats(const fw::ParamValues& p) const override {
-        const Scene& scene = kScenes[p.choice_index("scene")];
-        const std::size_t patches =
-            std::string(scene.name) == "sphere" ? ico_.index_count() / 3 : 1;
-        return {{"patches", patches}, {"domain", scene.quads ? "quads" : "triangles"}};
+    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
+        const Scene scene = p.get<Scene>("scene");
+        const std::size_t patches = scene == Scene::Sphere ? ico_.index_count() / 3 : 1;
+        return {{"patches", patches}, {"domain", quad_patches(scene) ? "quads" : "triangles"}};
     }
 
-    // Scroll: both levels up or down by one a step, within [1, 64].
-    bool on_scroll(fw::ParamValues& p, double steps) override {
-        for (const char* name : {"inner", "outer"})
-            p.number_ref(name) = std::clamp(p.number(name) + steps, kMinLevel, kMaxLevel);
+    // Scroll: both levels up or down by one a step, within their range [1, 64].
+    bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
+        for (const char* name : {"inner", "outer"}) p.set_clamped(name, p.number(name) + steps);
         return true;
     }
 
 private:
+    static std::size_t index(Scene scene) { return static_cast<std::size_t>(scene); }
+    static std::size_t index(Spacing spacing) { return static_cast<std::size_t>(spacing); }
+    fw::Program*& program(Scene scene, Spacing spacing) {
+        return programs_[index(scene)][index(spacing)];
+    }
+
     // programs_[scene][spacing]: the spacing is fixed when a program is linked.
-    std::array<std::array<fw::Program*, kSpacingCount>, kSceneCount> programs_{};
+    std::array<std::array<fw::Program*, std::size(kSpacings)>, std::size(kScenes)> programs_{};
     fw::Buffer triangle_vbo_, quad_vbo_, ico_vbo_, ico_ibo_;
     fw::VertexArray triangle_, quad_, ico_;
 };

@@ -6,7 +6,9 @@
 // versus Phong (per-pixel) shading of the Blinn-Phong model; toon shading.
 // Lecture: rasterization and interpolation, shading models, NPR.
 // GL: the GLSL interpolation qualifiers smooth, noperspective and flat,
-// glProvokingVertex, glDrawElements.
+// glProvokingVertex, glEnable/glDisable(GL_DEPTH_TEST), glDepthFunc,
+// glDisable(GL_CULL_FACE); the framework's VertexArray draws
+// (glDrawArrays for the triangle, glDrawElements for the plane and the sphere).
 // Student parts (marked TODO), all GLSL: the
 // qualifiers in shaders/06_interpolation/interpolate.frag; the lighting in
 // shading.vert (Gouraud) and shading.frag (Phong, toon).
@@ -18,32 +20,55 @@
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
 #include "scenes.hpp"
+// A_POSITION, A_VALUE, A_NORMAL (attribute locations) and the QUALIFIER_* and
+// SHADING_* values of u_qualifier and u_shading, shared with the shaders.
+#include "shared.glsl"
 
 namespace interpolation {
 
 namespace {
 
-// Vertex attribute locations, the same numbers as `layout(location = ...)`
-// in interpolate.vert and shading.vert: change both or neither.
-constexpr GLuint kPositionLocation = 0;  // in vec3 a_position
-constexpr GLuint kValueLocation = 1;     // in vec3 a_value (interpolate.vert)
-constexpr GLuint kNormalLocation = 1;    // in vec3 a_normal (shading.vert)
+// The shaders' uniforms.
+constexpr const char* kMvpUniform = "u_mvp";                         // interpolate.vert
+constexpr const char* kQualifierUniform = "u_qualifier";             // interpolate.frag
+constexpr const char* kCheckerboardUniform = "u_checkerboard";       // interpolate.frag
+constexpr const char* kChecksUniform = "u_checks";                   // interpolate.frag
+constexpr const char* kViewProjectionUniform = "u_view_projection";  // shading.vert
+constexpr const char* kShadingUniform = "u_shading";                 // shading.frag
+// The light, the eye and the material: shading.vert and shading.frag.
+constexpr const char* kLightUniform = "u_light";
+constexpr const char* kEyeUniform = "u_eye";
+constexpr const char* kKaUniform = "u_ka";
+constexpr const char* kKdUniform = "u_kd";
+constexpr const char* kKsUniform = "u_ks";
+constexpr const char* kShineUniform = "u_shine";
+constexpr const char* kLaUniform = "u_la";
+constexpr const char* kLeUniform = "u_le";
+
+// The parameters' choices. Each enum is what draw() switches on; the names
+// are what --set, checkpoints.json and the window's panel use.
+enum class Scene { Triangle, Plane, Shading };
+constexpr fw::Choice<Scene> kScenes[] = {
+    {Scene::Triangle, "triangle"}, {Scene::Plane, "plane"}, {Scene::Shading, "shading"}};
+// Each value is the one sent to u_qualifier (shared.glsl).
+enum class Qualifier {
+    Smooth = QUALIFIER_SMOOTH,
+    Noperspective = QUALIFIER_NOPERSPECTIVE,
+    Flat = QUALIFIER_FLAT,
+};
+constexpr fw::Choice<Qualifier> kQualifiers[] = {{Qualifier::Smooth, "smooth"},
+                                                 {Qualifier::Noperspective, "noperspective"},
+                                                 {Qualifier::Flat, "flat"}};
+// Each value is the one sent to u_shading (shared.glsl).
+enum class Shading { Gouraud = SHADING_GOURAUD, Phong = SHADING_PHONG, Toon = SHADING_TOON };
+constexpr fw::Choice<Shading> kShadings[] = {
+    {Shading::Gouraud, "gouraud"}, {Shading::Phong, "phong"}, {Shading::Toon, "toon"}};
 
 // The lecture's material and light: ka La + (kd cos(theta) + ks cos(delta)^shine) Le.
 const glm::vec3 kKa{0.1f}, kKd{0.8f, 0.3f, 0.2f}, kKs{0.5f}, kLa{1.0f}, kLe{1.0f};
 constexpr float kShine = 32.0f;
 
-// Sets a uniform that matters only once the student parts are written.
-// Until then the compiler may drop it, e.g. when three unqualified inputs
-// carry the same value: only uniforms that "will actually be accessed when
-// the executable code is executed" are active and have a location (GL 4.3,
-// Uniform Variables), and Program::set refuses the others.
-template <class T>
-void set_if_used(const fw::Program& program, const char* name, const T& value) {
-    if (program.has_uniform(name)) program.set(name, value);
-}
-
-// The light's coordinates, in world units; on_drag keeps them in range.
+// The light's coordinates, in world units; on_drag clamps them to this range.
 constexpr float kLightRange = 10.0f;
 fw::Param light_coordinate(char axis, double def) {
     return fw::Param::number(std::string("light_") + axis, def)
@@ -59,16 +84,13 @@ class InterpolationLab : public fw::Lab {
 public:
     static fw::LabInfo info() {
         fw::LabInfo i;
-        i.number = 6;
-        i.id = "interpolation";
-        i.dir = "06_interpolation";
         i.title = "What the rasterizer interpolates";
         i.params = {
-            fw::Param::choice("scene", {"triangle", "plane", "shading"}, "triangle")
+            fw::Param::choice("scene", kScenes, Scene::Triangle)
                 .help("triangle: one colour per vertex; plane: a checkered floor in "
                       "perspective; shading: a lit icosphere")
                 .key('S'),
-            fw::Param::choice("qualifier", {"smooth", "noperspective", "flat"}, "smooth")
+            fw::Param::choice("qualifier", kQualifiers, Qualifier::Smooth)
                 .help("how the fragment shader's input is interpolated (triangle, plane)")
                 .key('Q'),
             fw::Param::color("color_a", "ff0000").help("colour of A (-0.8, -0.8) (triangle)"),
@@ -79,7 +101,7 @@ public:
                 .range(1, 64)
                 .help("checkerboard cells along u and along v (plane)")
                 .key('C'),
-            fw::Param::choice("shading", {"gouraud", "phong", "toon"}, "gouraud")
+            fw::Param::choice("shading", kShadings, Shading::Gouraud)
                 .help("gouraud: lit per vertex; phong: lit per pixel; toon: three tones and "
                       "an outline (shading)")
                 .key('H'),
@@ -96,22 +118,26 @@ public:
     }
 
     void init(fw::ProgramLibrary& programs) override {
-        interpolate_ = &programs.load(
-            {"06_interpolation/interpolate.vert", "06_interpolation/interpolate.frag"});
-        shading_ =
-            &programs.load({"06_interpolation/shading.vert", "06_interpolation/shading.frag"});
+        // File names within shaders/06_interpolation/.
+        interpolate_ = &programs.load({"interpolate.vert", "interpolate.frag"});
+        shading_ = &programs.load({"shading.vert", "shading.frag"});
         const fw::VertexLayout layout = fw::VertexLayout::of<Vertex>()
-                                            .attr(kPositionLocation, &Vertex::position)
-                                            .attr(kValueLocation, &Vertex::value);
+                                            .attr(A_POSITION, &Vertex::position)
+                                            .attr(A_VALUE, &Vertex::value);
 
         // The colours change with the parameters: draw() rewrites them.
         triangle_vbo_ =
             fw::Buffer::from(triangle_vertices({}, {}, {}), GL_ARRAY_BUFFER, "triangle");
-        triangle_ = fw::VertexArray({&triangle_vbo_, layout, nullptr, GL_UNSIGNED_INT, "triangle"});
+        triangle_ = fw::VertexArray(
+            fw::VertexArrayDesc{.vertices = &triangle_vbo_, .layout = layout, .label = "triangle"});
 
         plane_vbo_ = fw::Buffer::from(plane_vertices(), GL_ARRAY_BUFFER, "plane vertices");
         plane_ibo_ = fw::Buffer::from(plane_indices(), GL_ELEMENT_ARRAY_BUFFER, "plane indices");
-        plane_ = fw::VertexArray({&plane_vbo_, layout, &plane_ibo_, GL_UNSIGNED_INT, "plane"});
+        plane_ = fw::VertexArray(fw::VertexArrayDesc{.vertices = &plane_vbo_,
+                                                     .layout = layout,
+                                                     .indices = &plane_ibo_,
+                                                     .index_type = GL_UNSIGNED_INT,
+                                                     .label = "plane"});
     }
 
     void draw(const fw::ParamValues& p, const fw::Frame& frame) override {
@@ -120,45 +146,47 @@ public:
         glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
         glDisable(GL_CULL_FACE);
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-        const std::string& scene = p.choice("scene");
+        const Scene scene = p.get<Scene>("scene");
 
-        if (scene == "shading") {
+        if (scene == Scene::Shading) {
             draw_sphere(p, aspect);
             return;
         }
         glDisable(GL_DEPTH_TEST);
         interpolate_->use();
-        // 0 smooth, 1 noperspective, 2 flat: the order of the parameter's choices.
-        set_if_used(*interpolate_, "u_qualifier", p.choice_index("qualifier"));
-        interpolate_->set("u_checkerboard", scene == "plane");
-        interpolate_->set("u_checks", static_cast<float>(p.integer("checks")));
-        if (scene == "triangle") {
-            interpolate_->set("u_mvp", glm::mat4(1.0f));
+        // The enum's value is the shader's QUALIFIER_* (shared.glsl). The
+        // uniform is set only while active: until the student qualifies the
+        // three inputs they carry the same value, and the compiler may drop it.
+        interpolate_->set_if_active(kQualifierUniform,
+                                    static_cast<int>(p.get<Qualifier>("qualifier")));
+        interpolate_->set(kCheckerboardUniform, scene == Scene::Plane);
+        interpolate_->set(kChecksUniform, static_cast<float>(p.integer("checks")));
+        if (scene == Scene::Triangle) {
+            interpolate_->set(kMvpUniform, glm::mat4(1.0f));
             triangle_vbo_.update(
                 triangle_vertices(p.color("color_a"), p.color("color_b"), p.color("color_c")));
             triangle_.draw(GL_TRIANGLES, 3);
         } else {
-            interpolate_->set("u_mvp", plane_view_projection(aspect));
+            interpolate_->set(kMvpUniform, plane_view_projection(aspect));
             plane_.draw_indexed(GL_TRIANGLES, static_cast<GLsizei>(plane_.index_count()));
         }
     }
 
     // scene=shading: the sphere's size, e.g. {"subdiv": 3, "vertices": 642,
     // "triangles": 1280}.
-    nlohmann::json stats(const fw::ParamValues& p) const override {
-        if (p.choice("scene") != "shading" || sphere_subdiv_ < 0) return nlohmann::json::object();
+    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
+        if (p.get<Scene>("scene") != Scene::Shading || sphere_subdiv_ < 0)
+            return nlohmann::json::object();
         return {{"subdiv", sphere_subdiv_},
                 {"vertices", sphere_.vertex_count()},
                 {"triangles", sphere_.index_count() / 3}};
     }
 
-    bool on_drag(fw::ParamValues& p, double dx, double dy) override {
-        if (p.choice("scene") != "shading") return false;
-        // 50 pixels of drag move the light one unit.
-        const float x = p.number("light_x") + 0.02f * float(dx);
-        const float y = p.number("light_y") + 0.02f * float(dy);
-        p.number_ref("light_x") = glm::clamp(x, -kLightRange, kLightRange);
-        p.number_ref("light_y") = glm::clamp(y, -kLightRange, kLightRange);
+    bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {
+        if (p.get<Scene>("scene") != Scene::Shading) return false;
+        // 50 pixels of drag move the light one unit, within its range.
+        p.set_clamped("light_x", p.number("light_x") + 0.02f * float(dx));
+        p.set_clamped("light_y", p.number("light_y") + 0.02f * float(dy));
         return true;
     }
 
@@ -168,18 +196,20 @@ private:
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         shading_->use();
-        shading_->set("u_view_projection", sphere_view_projection(aspect));
-        // 0 gouraud, 1 phong, 2 toon: the order of the parameter's choices.
-        shading_->set("u_shading", p.choice_index("shading"));
+        shading_->set(kViewProjectionUniform, sphere_view_projection(aspect));
+        // The enum's value is the shader's SHADING_* (shared.glsl).
+        shading_->set(kShadingUniform, static_cast<int>(p.get<Shading>("shading")));
+        // The light and the material matter only once the student's lighting
+        // is written; until then the compiler drops them: set while active.
         const glm::vec3 light{p.number("light_x"), p.number("light_y"), p.number("light_z")};
-        set_if_used(*shading_, "u_light", light);
-        set_if_used(*shading_, "u_eye", kSphereEye);
-        set_if_used(*shading_, "u_ka", kKa);
-        set_if_used(*shading_, "u_kd", kKd);
-        set_if_used(*shading_, "u_ks", kKs);
-        set_if_used(*shading_, "u_shine", kShine);
-        set_if_used(*shading_, "u_la", kLa);
-        set_if_used(*shading_, "u_le", kLe);
+        shading_->set_if_active(kLightUniform, light);
+        shading_->set_if_active(kEyeUniform, kSphereEye);
+        shading_->set_if_active(kKaUniform, kKa);
+        shading_->set_if_active(kKdUniform, kKd);
+        shading_->set_if_active(kKsUniform, kKs);
+        shading_->set_if_active(kShineUniform, kShine);
+        shading_->set_if_active(kLaUniform, kLa);
+        shading_->set_if_active(kLeUniform, kLe);
         sphere_.draw_indexed(GL_TRIANGLES, static_cast<GLsizei>(sphere_.index_count()));
     }
 
@@ -187,11 +217,14 @@ private:
         const SphereMesh mesh = sphere_mesh(subdiv);
         sphere_vbo_ = fw::Buffer::from(mesh.vertices, GL_ARRAY_BUFFER, "icosphere vertices");
         sphere_ibo_ = fw::Buffer::from(mesh.indices, GL_ELEMENT_ARRAY_BUFFER, "icosphere indices");
-        sphere_ = fw::VertexArray({&sphere_vbo_,
-                                   fw::VertexLayout::of<SurfaceVertex>()
-                                       .attr(kPositionLocation, &SurfaceVertex::position)
-                                       .attr(kNormalLocation, &SurfaceVertex::normal),
-                                   &sphere_ibo_, GL_UNSIGNED_INT, "icosphere"});
+        sphere_ = fw::VertexArray(
+            fw::VertexArrayDesc{.vertices = &sphere_vbo_,
+                                .layout = fw::VertexLayout::of<SurfaceVertex>()
+                                              .attr(A_POSITION, &SurfaceVertex::position)
+                                              .attr(A_NORMAL, &SurfaceVertex::normal),
+                                .indices = &sphere_ibo_,
+                                .index_type = GL_UNSIGNED_INT,
+                                .label = "icosphere"});
         sphere_subdiv_ = subdiv;
     }
 

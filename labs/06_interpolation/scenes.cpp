@@ -1,4 +1,4 @@
-// Lab 6's geometry and cameras; the numbers are those of README.md and LABS.md.
+// Lab 6's geometry and cameras; the numbers are those of labs/06_interpolation/README.md.
 #include "scenes.hpp"
 
 #include <cstddef>

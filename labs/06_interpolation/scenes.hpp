@@ -1,4 +1,4 @@
-// Lab 6's geometry and cameras, with the numbers of README.md (LABS.md).
+// Lab 6's geometry and cameras, with the numbers of labs/06_interpolation/README.md.
 #pragma once
 
 #include <glad/gl.h>

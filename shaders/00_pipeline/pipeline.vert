@@ -3,10 +3,11 @@
 // the identity in scenes order, indexed and primitives (their positions are
 // already NDC) and the cube's projection * view * model in scene culling.
 
-// The same numbers as kPositionLocation and kColorLocation in
-// labs/00_pipeline/pipeline.cpp: change both or neither.
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_color;
+// A_POSITION and A_COLOR: the attribute locations that pipeline.cpp describes.
+#include "shared.glsl"
+
+layout(location = A_POSITION) in vec3 a_position;
+layout(location = A_COLOR) in vec3 a_color;
 
 uniform mat4 u_mvp;
 

@@ -4,9 +4,10 @@
 // vectors, so M acts first. The 2D position becomes a point (x, y, 0, 1):
 // w = 1 is what lets the last column of a translation reach it.
 
-// The same number as kPositionLocation in labs/01_transforms/transforms.cpp:
-// change both or neither.
-layout(location = 0) in vec2 a_position;
+// A_POSITION: the attribute location, shared with transforms.cpp.
+#include "shared.glsl"
+
+layout(location = A_POSITION) in vec2 a_position;
 
 uniform mat4 u_projection;
 uniform mat4 u_model;

@@ -3,8 +3,10 @@
 // designed at the origin; u_mvp = projection * (the part's matrix: S, H or a
 // finger's), so gl_Position = P * M * p with column vectors.
 
-// The same number as kPositionLocation in labs/02_robot_arm/robot_arm.cpp.
-layout(location = 0) in vec2 a_position;
+// A_POSITION: the attribute location, shared with robot_arm.cpp.
+#include "shared.glsl"
+
+layout(location = A_POSITION) in vec2 a_position;
 
 uniform mat4 u_mvp;
 

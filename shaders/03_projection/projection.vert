@@ -4,9 +4,10 @@
 // world into the camera's frame, u_projection (P) maps the view volume to
 // clip space; GL then divides by w (NDC) and applies the viewport (window).
 
-// The same number as kPositionLocation in labs/03_projection/projection.cpp:
-// change both or neither.
-layout(location = 0) in vec3 a_position;
+// A_POSITION: the attribute location, shared with projection.cpp.
+#include "shared.glsl"
+
+layout(location = A_POSITION) in vec3 a_position;
 
 uniform mat4 u_model;
 uniform mat4 u_view;

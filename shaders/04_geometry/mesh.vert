@@ -3,10 +3,11 @@
 // world and into clip space; the geometry shader after it sees whole
 // triangles.
 
-// The same numbers as kPositionLocation and kNormalLocation in
-// labs/04_geometry/geometry.cpp: change both or neither.
-layout(location = 0) in vec3 a_position;  // object space, on the unit sphere
-layout(location = 1) in vec3 a_normal;    // object space, equal to a_position
+// A_POSITION and A_NORMAL: the attribute locations, shared with geometry.cpp.
+#include "shared.glsl"
+
+layout(location = A_POSITION) in vec3 a_position;  // object space, on the unit sphere
+layout(location = A_NORMAL) in vec3 a_normal;      // object space, equal to a_position
 
 uniform mat4 u_model;            // rotateY(spin)
 uniform mat4 u_view_projection;  // P * V

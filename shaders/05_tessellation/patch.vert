@@ -3,8 +3,10 @@
 // per control point of a patch and only hands the point on; the evaluation
 // shader places the vertices that the tessellator generates.
 
-// The same number as kPositionLocation in labs/05_tessellation/tessellation.cpp.
-layout(location = 0) in vec3 a_position;  // a control point, object space
+// A_POSITION: the attribute location, shared with tessellation.cpp.
+#include "shared.glsl"
+
+layout(location = A_POSITION) in vec3 a_position;  // a control point, object space
 
 out vec3 v_position;
 

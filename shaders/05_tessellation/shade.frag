@@ -7,8 +7,10 @@
 in vec3 g_normal;                       // interpolated, so no longer unit length
 noperspective in vec3 g_edge_distance;  // pixels to each edge, from wireframe.geom
 
-// The same numbers as Shading in labs/05_tessellation/tessellation.cpp.
-const int kFill = 0, kLambert = 1, kNormal = 2;
+// SHADING_FILL, SHADING_LAMBERT, SHADING_NORMAL: the values of u_shading,
+// shared with tessellation.cpp (its enum Shading).
+#include "shared.glsl"
+
 uniform int u_shading;
 uniform vec3 u_color;      // the fill colour, or the Lambert colour
 uniform vec3 u_light_dir;  // world space, unit length, towards the light
@@ -25,10 +27,10 @@ void main() {
     vec3 n = normalize(g_normal);
     if (u_wireframe && nearest < kHalfWidth)
         frag_color = vec4(u_edge_color, 1.0);
-    else if (u_shading == kFill)
+    else if (u_shading == SHADING_FILL)
         frag_color = vec4(u_color, 1.0);
-    else if (u_shading == kLambert)
+    else if (u_shading == SHADING_LAMBERT)
         frag_color = vec4(u_color * max(dot(n, u_light_dir), 0.0), 1.0);
-    else
+    else  // SHADING_NORMAL
         frag_color = vec4(0.5 * n + 0.5, 1.0);
 }

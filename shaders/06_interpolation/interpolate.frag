@@ -17,7 +17,11 @@ noperspective in vec3 v_noperspective;
 flat in vec3 v_flat;
 // END SOLUTION
 
-uniform int u_qualifier;      // 0 smooth, 1 noperspective, 2 flat
+// QUALIFIER_SMOOTH, QUALIFIER_NOPERSPECTIVE, QUALIFIER_FLAT: the values of
+// u_qualifier, shared with interpolation.cpp.
+#include "shared.glsl"
+
+uniform int u_qualifier;      // which input is shown: a QUALIFIER_* value
 uniform bool u_checkerboard;  // false: the value is a colour; true: it is (u, v, 0)
 uniform float u_checks;       // cells along u and along v
 
@@ -26,7 +30,9 @@ layout(location = 0) out vec4 frag_color;
 const vec3 kLight = vec3(0.9), kDark = vec3(0.1);
 
 void main() {
-    vec3 value = u_qualifier == 0 ? v_smooth : u_qualifier == 1 ? v_noperspective : v_flat;
+    vec3 value = u_qualifier == QUALIFIER_SMOOTH          ? v_smooth
+               : u_qualifier == QUALIFIER_NOPERSPECTIVE ? v_noperspective
+                                                        : v_flat;
     if (u_checkerboard) {
         vec2 cell = floor(value.xy * u_checks);
         frag_color = vec4(mod(cell.x + cell.y, 2.0) == 0.0 ? kLight : kDark, 1.0);

@@ -3,10 +3,12 @@
 // the floor's texture coordinates (u, v, 0)) to the rasterizer three times,
 // once for each way interpolate.frag asks it to be interpolated.
 
-// The same numbers as kPositionLocation and kValueLocation in
-// labs/06_interpolation/interpolation.cpp: change both or neither.
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_value;
+// A_POSITION and A_VALUE: the attribute locations, shared with
+// interpolation.cpp.
+#include "shared.glsl"
+
+layout(location = A_POSITION) in vec3 a_position;
+layout(location = A_VALUE) in vec3 a_value;
 
 uniform mat4 u_mvp;  // the identity (triangle) or P * V (plane)
 

@@ -5,15 +5,20 @@ in vec3 v_position;
 in vec3 v_normal;
 in vec3 v_gouraud;
 
-uniform int u_shading;  // 0 gouraud, 1 phong, 2 toon
+// SHADING_GOURAUD, SHADING_PHONG, SHADING_TOON: the values of u_shading,
+// shared with interpolation.cpp.
+#include "shared.glsl"
+
+uniform int u_shading;  // a SHADING_* value
 uniform vec3 u_light, u_eye;
 uniform vec3 u_ka, u_kd, u_ks, u_la, u_le;
 uniform float u_shine;
 
 layout(location = 0) out vec4 frag_color;
 
-// The same model as blinn_phong() in shading.vert (GLSL has no #include):
-// Gouraud and Phong shading differ only in where it is evaluated.
+// The same model as blinn_phong() in shading.vert (shared.glsl holds only
+// names, no code): Gouraud and Phong shading differ only in where it is
+// evaluated.
 vec3 blinn_phong(vec3 N, vec3 P) {
     // BEGIN SOLUTION
     // STUDENT: return abs(N);  // TODO: the model of shading.vert, here per pixel
@@ -42,8 +47,8 @@ vec3 toon(vec3 N, vec3 P) {
 void main() {
     // The interpolated normal is shorter than 1 between the vertices.
     vec3 N = normalize(v_normal);
-    vec3 color = u_shading == 0 ? v_gouraud
-               : u_shading == 1 ? blinn_phong(N, v_position)
-                                : toon(N, v_position);
+    vec3 color = u_shading == SHADING_GOURAUD ? v_gouraud
+               : u_shading == SHADING_PHONG   ? blinn_phong(N, v_position)
+                                              : toon(N, v_position);
     frag_color = vec4(color, 1.0);
 }

@@ -4,10 +4,12 @@
 // interpolate the colour; Phong and toon shading hand the position and the
 // normal on, and shading.frag evaluates per pixel.
 
-// The same numbers as kPositionLocation and kNormalLocation in
-// labs/06_interpolation/interpolation.cpp: change both or neither.
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
+// A_POSITION and A_NORMAL: the attribute locations, shared with
+// interpolation.cpp.
+#include "shared.glsl"
+
+layout(location = A_POSITION) in vec3 a_position;
+layout(location = A_NORMAL) in vec3 a_normal;
 
 // The sphere sits at the origin unscaled (model = identity), so object
 // coordinates are world coordinates and the lighting is done in the world.

@@ -10,12 +10,16 @@
 
 namespace {
 
+enum class Scene { Cards, ZFight };
+constexpr fw::Choice<Scene> kScenes[] = {{Scene::Cards, "cards"}, {Scene::ZFight, "zfight"}};
+enum class Other { Cards, ZFight };
+
 const std::vector<fw::Param>& sample_params() {
     static const std::vector<fw::Param> params = {
         fw::Param::number("fov", 60).range(10, 150).unit("deg").help("field of view").key('F'),
         fw::Param::integer("subdiv", 2).range(0, 5),
         fw::Param::boolean("wireframe", true),
-        fw::Param::choice("scene", {"cards", "zfight"}, "cards"),
+        fw::Param::choice("scene", kScenes, Scene::Cards),
         fw::Param::color("tint", "ff8000"),
     };
     return params;
@@ -35,7 +39,8 @@ TEST_CASE("defaults come from the declaration") {
     CHECK(v.number("fov") == 60.0f);
     CHECK(v.integer("subdiv") == 2);
     CHECK(v.flag("wireframe"));
-    CHECK(v.choice("scene") == "cards");
+    CHECK(v.get<Scene>("scene") == Scene::Cards);
+    CHECK(v.text("scene") == "cards");
     CHECK(v.color("tint").r == doctest::Approx(1.0));
     CHECK(v.color("tint").g == doctest::Approx(128.0 / 255.0));
     CHECK(v.text("tint") == "ff8000");
@@ -51,7 +56,7 @@ TEST_CASE("set parses every type") {
     CHECK(v.number("fov") == 45.5f);
     CHECK(v.integer("subdiv") == 5);
     CHECK_FALSE(v.flag("wireframe"));
-    CHECK(v.choice_index("scene") == 1);
+    CHECK(v.get<Scene>("scene") == Scene::ZFight);
     CHECK(v.color("tint") == glm::vec3(0, 1, 0));
     auto j = v.to_json();
     CHECK(j["fov"] == 45.5);
@@ -81,14 +86,65 @@ TEST_CASE("bad values name the lab, the parameter and what is valid") {
 TEST_CASE("reading a parameter as the wrong type is a programming error") {
     fw::ParamValues v("demo", &sample_params());
     CHECK_THROWS_AS(v.flag("fov"), fw::Error);
-    CHECK_THROWS_AS(v.choice("wireframe"), fw::Error);
+    CHECK_THROWS_AS(v.get<Scene>("wireframe"), fw::Error);
     CHECK(v.number("subdiv") == 2.0f);  // an int reads as a number
+    // A choice reads only as the enum it is bound to; the message names both.
+    const std::string e = fw::test::thrown([&] { v.get<Other>("scene"); });
+    CHECK(contains(e, "parameter 'scene' is a choice of"));
+    CHECK(contains(e, "Scene"));
+    CHECK(contains(e, "Other"));
+}
+
+TEST_CASE("set_clamped keeps a number inside its declared range") {
+    fw::ParamValues v("demo", &sample_params());
+    CHECK(v.set_clamped("fov", 500) == 150.0);
+    CHECK(v.number("fov") == 150.0f);
+    CHECK(v.set_clamped("fov", -3) == 10.0);
+    CHECK(v.set_clamped("fov", 42.5) == 42.5);
+    CHECK(v.set_clamped("subdiv", 3.4) == 3.0);  // an integer stays whole
+    CHECK(v.set_clamped("subdiv", 99) == 5.0);
+    CHECK_THROWS_AS(v.set_clamped("scene", 1), fw::Error);
 }
 
 TEST_CASE("a declaration whose default is outside its range or choices is refused") {
     CHECK_THROWS_AS(fw::Param::number("x", 5).range(0, 1), fw::Error);
-    CHECK_THROWS_AS(fw::Param::choice("x", {"a", "b"}, "c"), fw::Error);
     CHECK_THROWS_AS(fw::Param::color("x", "12345"), fw::Error);
+}
+
+TEST_CASE("a choice declaration is checked when it is made") {
+    enum class Abc { A, B, C };
+    const std::string missing = fw::test::thrown([] {
+        fw::Param::choice("x", {fw::Choice<Abc>{Abc::A, "a"}, {Abc::B, "b"}}, Abc::C);
+    });
+    CHECK(contains(missing, "parameter 'x'"));
+    CHECK(contains(missing, "not one of its choices {a, b}"));
+    CHECK(contains(fw::test::thrown([] {
+                       fw::Param::choice("x", {fw::Choice<Abc>{Abc::A, "a"}, {Abc::B, "a"}}, Abc::A);
+                   }),
+                   "the name 'a' is given twice"));
+    CHECK(contains(fw::test::thrown([] {
+                       fw::Param::choice("x", {fw::Choice<Abc>{Abc::A, "a"}, {Abc::A, "b"}}, Abc::A);
+                   }),
+                   "'a' and 'b' are the same enum value"));
+    const fw::Param ok = fw::Param::choice("x", {fw::Choice<Abc>{Abc::C, "c"}, {Abc::A, "a"}}, Abc::A);
+    CHECK(ok.default_text() == "a");
+    CHECK(ok.range_text() == "{c, a}");
+}
+
+TEST_CASE("a lab's number and id come from its folder's name") {
+    int number = -1;
+    std::string id;
+    fw::parse_lab_dir("02_robot_arm", number, id);
+    CHECK(number == 2);
+    CHECK(id == "robot-arm");
+    fw::parse_lab_dir("17_x", number, id);
+    CHECK(number == 17);
+    CHECK(id == "x");
+    for (const char* bad : {"robot_arm", "2_robot", "02-robot", "02_", "02_Robot", "02_a b"}) {
+        INFO(std::string(bad));
+        CHECK(contains(fw::test::thrown([&] { fw::parse_lab_dir(bad, number, id); }),
+                       "NN_"));
+    }
 }
 
 TEST_CASE("keyboard steps") {
@@ -97,7 +153,7 @@ TEST_CASE("keyboard steps") {
 }
 
 TEST_CASE("checkpoint files are validated against the declaration") {
-    fw::RegisteredLab lab{{0, "demo", "99_demo", "Demo", sample_params(), {}, {}}, nullptr};
+    fw::RegisteredLab lab{{99, "demo", "99_demo", "Demo", sample_params(), {}, {}}, nullptr};
     std::string dir = fw::test::out_dir();
     auto write = [&](const std::string& text) {
         std::ofstream(dir + "/cp.json") << text;
@@ -114,7 +170,7 @@ TEST_CASE("checkpoint files are validated against the declaration") {
     CHECK(good[1].visibility == "hidden");
     fw::ParamValues a = fw::checkpoint_params(lab, good[0]);
     CHECK(a.number("fov") == 30.0f);
-    CHECK(a.choice("scene") == "zfight");
+    CHECK(a.get<Scene>("scene") == Scene::ZFight);
     CHECK(a.integer("subdiv") == 2);
 
     auto error_for = [&](const std::string& text) {
@@ -132,9 +188,23 @@ TEST_CASE("checkpoint files are validated against the declaration") {
     CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "param": {}}]})"), "unknown field \"param\""));
     CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a b"}]})"), "letters, digits"));
     CHECK(contains(error_for(R"({"lab": "other", "checkpoints": []})"), "belongs to lab 'demo'"));
-    CHECK(contains(error_for(R"({"checkpoints": []})"), "\"lab\""));
+    CHECK(contains(error_for(R"({"checkpoints": []})"), "not in a lab folder"));
     CHECK(contains(error_for(R"({"checkpoints": [)"), dir + "/cp.json"));
     CHECK(contains(error_for(R"({"checkpoints": [)"), "not valid JSON"));
     CHECK_THROWS_WITH_AS(fw::load_checkpoints(lab, dir + "/missing.json"),
                          doctest::Contains("missing.json"), fw::Error);
+}
+
+TEST_CASE("a checkpoints file in a lab folder belongs to that folder's lab") {
+    const std::string dir = fw::test::out_dir() + "/labs/99_demo";
+    std::filesystem::create_directories(dir);
+    const std::string path = dir + "/checkpoints.json";
+    std::ofstream(path) << R"({"checkpoints": [{"name": "a"}]})";
+    CHECK(fw::read_checkpoint_file(path).lab == "demo");
+    std::ofstream(path) << R"({"lab": "demo", "checkpoints": []})";
+    CHECK(fw::read_checkpoint_file(path).lab == "demo");
+    std::ofstream(path) << R"({"lab": "pipeline", "checkpoints": []})";
+    const std::string e = fw::test::thrown([&] { fw::read_checkpoint_file(path); });
+    CHECK(contains(e, "is in folder 99_demo, lab 'demo'"));
+    CHECK(contains(e, "remove \"lab\""));
 }

@@ -2,6 +2,7 @@
 // shader paths, and the compile error text built from a driver's log.
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "framework/error.hpp"
 #include "framework/gl/shader.hpp"
@@ -20,8 +21,8 @@ TEST_CASE("shader text: the stage comes from the extension") {
 
 TEST_CASE("shader text: paths resolve against LAB_SHADER_DIR, else the source tree") {
     unsetenv("LAB_SHADER_DIR");
-    CHECK(fw::shader_path("00_pipeline/basic.vert") ==
-          fw::test::source_dir() + "/shaders/00_pipeline/basic.vert");
+    CHECK(fw::shader_path("00_pipeline/pipeline.vert") ==
+          fw::test::source_dir() + "/shaders/00_pipeline/pipeline.vert");
     CHECK(fw::shader_path("/abs/x.frag") == "/abs/x.frag");
     setenv("LAB_SHADER_DIR", "/tmp/my shaders", 1);
     CHECK(fw::shader_path("a.vert") == "/tmp/my shaders/a.vert");
@@ -57,4 +58,54 @@ TEST_CASE("shader text: a compile error quotes each line the log names, once") {
     const std::string bare =
         fw::format_compile_error("x.vert", fw::Stage::Vertex, "internal error\n", source);
     CHECK(bare == "x.vert: vertex shader failed to compile:\n  internal error\n");
+}
+
+TEST_CASE("shader text: #include pastes a file of the same folder between #line directives") {
+    const std::string dir = fw::test::out_dir();
+    fw::test::write_text(dir + "/shared.glsl", "// names\n#define A_POSITION 0\n");
+    std::vector<fw::IncludedFile> included;
+    const std::string expanded = fw::expand_includes(
+        "#version 430 core\n#include \"shared.glsl\"\nlayout(location = A_POSITION) in vec3 p;\n",
+        dir + "/x.vert", included);
+    MESSAGE(expanded);
+    // The included file is source string 1 from line 100001; after it, the
+    // shader's own numbering resumes at line 3 of string 0.
+    CHECK(expanded ==
+          "#version 430 core\n"
+          "#line 100001 1\n// names\n#define A_POSITION 0\n\n#line 3 0\n"
+          "layout(location = A_POSITION) in vec3 p;\n");
+    REQUIRE(included.size() == 1);
+    // Messages show paths inside the source tree relative to it.
+    const std::string shown = fw::display_path(dir + "/shared.glsl");
+    CHECK(included[0].path == shown);
+    CHECK(included[0].text == "// names\n#define A_POSITION 0\n");
+
+    // A log line of string 1 (NVIDIA) or of line 100002 (Mesa, which says
+    // string 0) quotes the included file's own line.
+    for (const char* log : {"1(2) : error C0000: syntax error\n", "0:100002(9): error: syntax\n"}) {
+        const std::string error =
+            fw::format_compile_error("x.vert", fw::Stage::Vertex, log,
+                                     "#version 430 core\n#include \"shared.glsl\"\n", included);
+        MESSAGE(error);
+        CHECK(error.find(shown + ":2: vertex shader failed to compile:") == 0);
+        CHECK(error.find("  " + shown + ":2 | #define A_POSITION 0") != std::string::npos);
+    }
+}
+
+TEST_CASE("shader text: a bad #include names the line and the file") {
+    const std::string dir = fw::test::out_dir();
+    std::vector<fw::IncludedFile> included;
+    auto error = [&](const std::string& text) {
+        return fw::test::thrown([&] { fw::expand_includes(text, dir + "/y.frag", included); });
+    };
+    fw::test::check_mentions(error("#version 430 core\n#include \"missing.glsl\"\n"),
+                             {fw::display_path(dir + "/y.frag") + ":2:",
+                              "cannot read included file", dir + "/missing.glsl"});
+    fw::test::check_mentions(error("#include <shared.glsl>\n"),
+                             {"y.frag:1:", "#include \"name\""});
+    fw::test::check_mentions(error("#include \"../other/shared.glsl\"\n"),
+                             {"y.frag:1:", "same folder"});
+    fw::test::write_text(dir + "/outer.glsl", "#include \"inner.glsl\"\n");
+    fw::test::check_mentions(error("#include \"outer.glsl\"\n"),
+                             {"outer.glsl", "may not include another"});
 }

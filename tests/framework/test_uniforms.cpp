@@ -59,6 +59,21 @@ TEST_CASE("uniforms: an unknown or optimised-out name names the program and list
                     "optimised out", "u_mvp: mat4"});
 }
 
+TEST_CASE("uniforms: set_if_active skips an optimised-out uniform but not a misspelt one") {
+    fw::Program p = uniforms_program();
+    // u_unused is declared in uniforms.frag but read by nothing: not active.
+    CHECK_FALSE(p.set_if_active("u_unused", 1.0f));
+    CHECK(p.set_if_active("u_color", glm::vec3(0.25f, 0.5f, 1.0f)));
+    float color[3] = {0, 0, 0};
+    glGetUniformfv(p.id(), glGetUniformLocation(p.id(), "u_color"), color);
+    CHECK(color[1] == 0.5f);
+    // A name in none of the program's files is an error, as with set().
+    check_mentions(error_of([&] { p.set_if_active("u_colour", glm::vec3(1)); }),
+                   {"no active uniform 'u_colour'", "misspelt", "Active uniforms: "});
+    // An active uniform with a value of the wrong type is still refused.
+    CHECK_THROWS_AS(p.set_if_active("u_color", 1.0f), fw::Error);
+}
+
 TEST_CASE("uniforms: a value of the wrong type names the declared and the given type") {
     fw::Program p = uniforms_program();
     check_mentions(error_of([&] { p.set("u_mvp", glm::vec3(1)); }),

@@ -2,6 +2,7 @@
 // Expected/Observed printed for every probe. Runs once per backend.
 #include <glad/gl.h>
 
+#include <cstddef>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -195,6 +196,56 @@ TEST_CASE("vertex array: indexed and flat storage draw the same image") {
     check_mentions(thrown<fw::UsageError>([&] { indexed.draw_indexed(GL_TRIANGLES, 6, 9); }),
                    {"[9, 15)", "holds 12"});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("vertex array: a blank one described by hand draws as one described by the wrapper") {
+    const std::vector<ColorVertex> vertices = {
+        {{-0.8f, -0.8f, 0}, kRed}, {{0.8f, -0.8f, 0}, kGreen}, {{0.0f, 0.8f, 0}, kBlue}};
+    fw::Buffer vbo = fw::Buffer::from(vertices, GL_ARRAY_BUFFER, "triangle");
+    fw::VertexArray wrapped({.vertices = &vbo, .layout = color_layout(), .label = "wrapped"});
+    fw::VertexArray blank = fw::VertexArray::blank("by hand");
+    CHECK(fw::object_label(GL_VERTEX_ARRAY, blank.id()) == "by hand");
+    CHECK(blank.vertex_count() == 0);
+    glBindVertexArray(blank.id());
+    glBindBuffer(GL_ARRAY_BUFFER, vbo.id());
+    glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(ColorVertex),
+                          reinterpret_cast<const void*>(offsetof(ColorVertex, position)));
+    glEnableVertexAttribArray(kPosition);
+    glVertexAttribPointer(kColor, 3, GL_FLOAT, GL_FALSE, sizeof(ColorVertex),
+                          reinterpret_cast<const void*>(offsetof(ColorVertex, color)));
+    glEnableVertexAttribArray(kColor);
+    glBindVertexArray(0);
+
+    // The program takes its locations from an #include of shared.glsl.
+    fw::Program prog = fw::Program::from_files({"tests/included.vert", "tests/color.frag"});
+    prog.use();
+    fw::Framebuffer fb_wrapped({64, 64, "wrapped"}), fb_blank({64, 64, "blank"});
+    fb_wrapped.bind();
+    clear_black();
+    wrapped.draw(GL_TRIANGLES, 3);
+    fb_blank.bind();
+    clear_black();
+    glBindVertexArray(blank.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    fw::check_gl("wrapped and hand-described draws");
+    const fw::Image a = fb_wrapped.read_color(), b = fb_blank.read_color();
+    const int covered = static_cast<int>(a.pixels.size()) - count_pixels(a, {0, 0, 0, 255});
+    MESSAGE("pixels covered " << covered);
+    CHECK(covered > 800);
+    CHECK(a.pixels == b.pixels);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("shader: an error in an #included file names that file and quotes its line") {
+    fw::enable_debug_output();
+    const std::string msg = thrown([] {
+        fw::Program::from_files({"tests/color.vert", "tests/broken_include.frag"});
+    });
+    check_mentions(msg, {"shaders/tests/broken_shared.glsl:3:", "fragment shader failed to compile",
+                         "undeclared_grey",
+                         "shaders/tests/broken_shared.glsl:3 | const vec3 kGrey = undeclared_grey;"});
+    CHECK_NOTHROW(fw::check_gl("after a failed compile"));
 }
 
 TEST_CASE("shader: a compile error names the file, the stage, the line and quotes it") {

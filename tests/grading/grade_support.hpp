@@ -6,9 +6,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "framework/text.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace grade_test {
@@ -43,6 +47,21 @@ inline Graded grade(const std::string& env, const std::string& args, const std::
     return g;
 }
 
+// The rows of a summary.txt, each as its words: "lab  score  checks
+// status...  seconds" under a header line, up to a blank line.
+inline std::vector<std::vector<std::string>> summary_rows(const std::string& summary) {
+    std::istringstream table(summary);
+    std::string line;
+    std::getline(table, line);
+    std::vector<std::vector<std::string>> rows;
+    while (std::getline(table, line) && !line.empty()) {
+        std::istringstream words(line);
+        rows.emplace_back(std::istream_iterator<std::string>(words),
+                          std::istream_iterator<std::string>());
+    }
+    return rows;
+}
+
 // The tests of one lab in results.json ("<lab> / <checkpoint> / <check>").
 inline json lab_tests(const json& results, const std::string& lab) {
     json out = json::array();
@@ -68,19 +87,20 @@ inline std::string make_tree(const std::string& dir, bool hostile) {
     if (fs::exists(src / "reference"))
         fs::copy(src / "reference", dir + "/labs/00_pipeline/reference");
     if (!hostile) return dir;
-    std::string checkpoints;
+    std::vector<std::string> checkpoints;
     for (const char* name : {"frame", "frame2"}) {
-        checkpoints += std::string(checkpoints.empty() ? "" : ",\n") + R"(  {"name": ")" + name +
-                       R"(", "visibility": "visible", "params": {}, "checks": [
+        checkpoints.push_back(R"(  {"name": ")" + std::string(name) +
+                              R"(", "visibility": "visible", "params": {}, "checks": [
      {"kind": "image", "size": [64, 64], "points": 1},
      {"kind": "probe", "at": [1, 1], "color": [0, 0, 0], "points": 1},
-     {"kind": "stat", "stat": "primitives_generated", "equals": 0, "points": 1}]})";
+     {"kind": "stat", "stat": "primitives_generated", "equals": 0, "points": 1}]})");
         fs::create_directories(dir + "/labs/01_hostile/reference");
         fw::write_png(dir + "/labs/01_hostile/reference/" + name + ".png",
                       fw::Image(64, 64, {0, 0, 0, 255}));
     }
-    write_file(dir + "/labs/01_hostile/checkpoints.json",
-               "{\"lab\": \"hostile\", \"checkpoints\": [\n" + checkpoints + "]}\n");
+    write_file(
+        dir + "/labs/01_hostile/checkpoints.json",
+        "{\"lab\": \"hostile\", \"checkpoints\": [\n" + fw::join(checkpoints, ",\n") + "]}\n");
     return dir;
 }
 

@@ -19,8 +19,10 @@
 #include <thread>
 
 #include "framework/checkpoints.hpp"
+#include "framework/text.hpp"
 #include "grading/commands.hpp"
 #include "grading/release.hpp"
+#include "tests/grading/grade_support.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -31,8 +33,8 @@ std::string grading::source_root() { return fw::test::source_dir(); }
 
 namespace {
 
+using fw::shell_quote;
 using fw::test::read_text;
-using fw::test::shell_quote;
 using fw::test::write_text;
 
 
@@ -97,19 +99,9 @@ Grade grade(const std::string& course, const std::string& lab, const std::string
     g.results = nlohmann::json::parse(read_text(out / "results.json"));
     for (const auto& t : g.results["tests"])
         (t["status"] == "passed" ? g.passed : g.failed).insert(t["name"].get<std::string>());
-    // summary.txt: "lab  score  checks  status...  seconds" under a header
-    // line, up to a blank line.
-    std::istringstream table(read_text(out / "summary.txt"));
-    std::string line;
-    std::getline(table, line);
-    while (std::getline(table, line) && !line.empty()) {
-        std::istringstream words(line);
-        std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
-        if (w.size() < 5) continue;
-        std::string status;
-        for (size_t i = 3; i + 1 < w.size(); ++i) status += (status.empty() ? "" : " ") + w[i];
-        g.status[w[0]] = status;
-    }
+    for (const std::vector<std::string>& w :
+         grade_test::summary_rows(read_text(out / "summary.txt")))
+        if (w.size() >= 5) g.status[w[0]] = fw::join(std::vector(w.begin() + 3, w.end() - 1), " ");
     return g;
 }
 

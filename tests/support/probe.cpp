@@ -67,8 +67,9 @@ void check_mentions(const std::string& message, const std::vector<std::string>& 
                       "expected the message to contain '" << n << "'");
 }
 
-LabUnderTest::LabUnderTest(const std::string& id)
-    : lab(find_lab(id)), renderer(lab, context_info()) {}
+LabUnderTest::LabUnderTest(const RegisteredLab& lab_)
+    : lab(lab_), renderer(lab, context_info()) {}
+LabUnderTest::LabUnderTest(const std::string& id) : LabUnderTest(find_lab(id)) {}
 
 ParamValues LabUnderTest::params(const Settings& settings) const {
     ParamValues p = default_params(lab);
@@ -127,12 +128,6 @@ void check_probes_and_stats(const nlohmann::json& checks, const RenderOutput& ou
             CHECK(value->at(path) == check["equals"]);
         }
     }
-}
-
-std::string shell_quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
 }
 
 std::string read_text(const std::string& path) {

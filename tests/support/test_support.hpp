@@ -53,9 +53,16 @@ bool probe_depth(const DepthImage& img, int x, int y, float expected, float tol 
 // uses it to show that the file's expectations hold for the solution.
 void check_probes_and_stats(const nlohmann::json& checks, const RenderOutput& out);
 
+// The lab whose folder the test is in: a lab's test (labs/NN_name/tests/)
+// tests the lab of its own folder, so that a copy of the lab under another
+// name tests the copy. Only in lab tests (tests/support/this_lab.cpp).
+const RegisteredLab& this_lab();
+
 // A lab and its renderer in the test's context, created once per test case.
 using Settings = std::vector<std::pair<std::string, std::string>>;  // name, value as --set takes it
 struct LabUnderTest {
+    LabUnderTest();  // this_lab(); only in lab tests
+    explicit LabUnderTest(const RegisteredLab& lab);
     explicit LabUnderTest(const std::string& id);
     // The defaults, then `settings`.
     ParamValues params(const Settings& settings) const;
@@ -95,8 +102,8 @@ std::string thrown(F&& f) {
 // Logs `message` and checks that it contains every one of `needles`.
 void check_mentions(const std::string& message, const std::vector<std::string>& needles);
 
-// Files and shell words for tests that run commands on copies of the tree.
-std::string shell_quote(const std::string& s);                      // 'it'\''s'
+// Files for tests that run commands on copies of the tree (fw::shell_quote,
+// framework/text.hpp, makes their shell words).
 std::string read_text(const std::string& path);                     // "" when unreadable
 void write_text(const std::string& path, const std::string& text);  // makes the parent folders
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "framework/lab.hpp"
-#include "labs/03_projection/camera_math.hpp"
+#include "camera_math.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
@@ -74,13 +74,11 @@ float ndc_depth(const glm::mat4& P, float z) {
 }  // namespace
 
 TEST_CASE("projection: the declaration has the sheet's parameters and defaults") {
-    const fw::RegisteredLab& lab = fw::find_lab("projection");
-    CHECK(lab.info.number == 3);
-    CHECK(lab.info.dir == "03_projection");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     const fw::ParamValues p = fw::default_params(lab);
-    CHECK(p.choice("scene") == "cards");
-    CHECK(p.choice("show") == "color");
-    CHECK(p.choice("mode") == "perspective");
+    CHECK(p.text("scene") == "cards");
+    CHECK(p.text("show") == "color");
+    CHECK(p.text("mode") == "perspective");
     CHECK(p.number("fov") == 60);
     CHECK(p.number("near") == 1);
     CHECK(p.number("far") == 50);
@@ -102,28 +100,28 @@ TEST_CASE("projection: the declaration has the sheet's parameters and defaults")
 }
 
 TEST_CASE("projection: dragging orbits the eye about the target, the wheel zooms") {
-    const fw::RegisteredLab& reg = fw::find_lab("projection");
+    const fw::RegisteredLab& reg = fw::test::this_lab();
     std::unique_ptr<fw::Lab> lab = reg.create();
     fw::ParamValues p = fw::default_params(reg);
     p.set("eye_z", "4");
     p.set("target_z", "0");
     auto eye = [&] { return glm::vec3(p.number("eye_x"), p.number("eye_y"), p.number("eye_z")); };
     // Right: the scene turns right, so the eye goes left (-x), still 4 away.
-    CHECK(lab->on_drag(p, 50, 0));
+    CHECK(lab->on_drag(p, fw::Frame{}, 50, 0));
     CHECK(eye().x < -1.0f);
     CHECK(glm::length(eye()) == doctest::Approx(4.0f).epsilon(1e-5));
     CHECK(eye().y == doctest::Approx(0.0f));
     // Far down: the eye rises, but stops short of straight above the target.
-    CHECK(lab->on_drag(p, 0, -10000));
+    CHECK(lab->on_drag(p, fw::Frame{}, 0, -10000));
     CHECK(glm::length(eye()) == doctest::Approx(4.0f).epsilon(1e-5));
     CHECK(eye().y > 3.9f);
     CHECK(lab->validate(p).empty());
     // The wheel: 5 degrees a step, within [10, 150].
-    CHECK(lab->on_scroll(p, 2));
+    CHECK(lab->on_scroll(p, fw::Frame{}, 2));
     CHECK(p.number("fov") == 50);
-    lab->on_scroll(p, 100);
+    lab->on_scroll(p, fw::Frame{}, 100);
     CHECK(p.number("fov") == 10);
-    lab->on_scroll(p, -100);
+    lab->on_scroll(p, fw::Frame{}, -100);
     CHECK(p.number("fov") == 150);
 }
 

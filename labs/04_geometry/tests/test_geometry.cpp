@@ -1,6 +1,7 @@
-// Lab 4 `geometry`. Every expectation is computed here from the sheet's
-// numbers (LABS.md, labs/04_geometry/README.md) by geometry_scene.cpp, never
-// read from a reference image or from the lab's own code.
+// Lab 4 `geometry`, the lab of this test's folder. Every expectation is
+// computed here from the sheet's numbers (labs/04_geometry/README.md) by
+// geometry_scene.cpp, never read from a reference image or from the lab's own
+// code.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,9 +21,8 @@ namespace {
 
 using fw::test::Settings;
 
-// The lab, created once per test case.
+// The lab of this folder, created once per test case.
 struct Geometry : fw::test::LabUnderTest {
-    Geometry() : LabUnderTest("geometry") {}
     // Square frames of `size`.
     fw::RenderOutput render(const Settings& settings, int size = kSize) {
         return LabUnderTest::render(settings, size, size);
@@ -72,11 +72,9 @@ int mismatches(const fw::Image& img, const std::vector<Face>& faces, bool wirefr
 }  // namespace
 
 TEST_CASE("geometry: the declaration has the sheet's parameters and defaults") {
-    const fw::RegisteredLab& lab = fw::find_lab("geometry");
-    CHECK(lab.info.number == 4);
-    CHECK(lab.info.dir == "04_geometry");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     const fw::ParamValues p = fw::default_params(lab);
-    CHECK(p.choice("mode") == "passthrough");
+    CHECK(p.text("mode") == "passthrough");
     CHECK(p.integer("subdiv") == 2);
     CHECK(p.number("spin") == 0.0f);
     CHECK(p.number("amount") == doctest::Approx(0.2));
@@ -261,7 +259,7 @@ TEST_CASE("geometry: checkpoints.json: its probes and stats hold for the solutio
     fw::test::for_each_checkpoint(
         lab.lab, lab.renderer, 5,
         [&](const fw::Checkpoint& cp, const fw::ParamValues& params, const fw::RenderOutput& out) {
-            modes.push_back(params.choice("mode"));
+            modes.push_back(params.text("mode"));
             fw::test::check_probes_and_stats(cp.checks, out);
         });
     for (const char* mode : {"passthrough", "duplicate", "explode", "normals", "wireframe"})

@@ -1,4 +1,4 @@
-// Lab 4's scene as the sheet defines it (LABS.md, labs/04_geometry/README.md),
+// Lab 4's scene as the sheet defines it (labs/04_geometry/README.md),
 // computed here without the lab's or the framework's code: the camera, the
 // light, the sphere's silhouette, and a small ray caster that predicts every
 // pixel of the icosahedron (subdiv 0), whose corners the sheet gives in

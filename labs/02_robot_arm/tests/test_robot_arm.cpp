@@ -1,5 +1,5 @@
 // Lab 2 `robot-arm`. Every expectation is computed here from the sheet's
-// numbers (LABS.md, labs/02_robot_arm/README.md), never read from a reference
+// numbers (docs/labs.md, labs/02_robot_arm/README.md), never read from a reference
 // image or from the lab's own code. The matrices come from a closed form in
 // complex numbers: a rigid motion of the plane is z -> origin + e^(i angle) z.
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include "framework/checkpoints.hpp"
 #include "framework/lab.hpp"
 #include "framework/render.hpp"
-#include "labs/02_robot_arm/arm.hpp"
+#include "arm.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
@@ -125,7 +125,7 @@ cplx pixel_centre(int x, int y) {
 }
 
 struct RobotArm {
-    const fw::RegisteredLab& lab = fw::find_lab("robot-arm");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     fw::LabRenderer renderer{lab, fw::test::context_info()};
 
     fw::ParamValues params(const Pose& p) {
@@ -181,9 +181,7 @@ const Pose kEdges[] = {{0, 0, 0},       {90, 0, 0},      {-90, 0, 0},     {180, 
 }  // namespace
 
 TEST_CASE("robot-arm: the declaration has the sheet's parameters, ranges and defaults") {
-    const fw::RegisteredLab& lab = fw::find_lab("robot-arm");
-    CHECK(lab.info.number == 2);
-    CHECK(lab.info.dir == "02_robot_arm");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     const fw::ParamValues p = fw::default_params(lab);
     CHECK(p.number("shoulder") == 30);
     CHECK(p.number("hand") == -45);
@@ -228,7 +226,7 @@ TEST_CASE("robot-arm: arm_matrices is the closed form on 1000 random poses") {
 }
 
 TEST_CASE("robot-arm: the grader's call through JSON returns the same five matrices") {
-    const fw::UnitFunction& f = fw::find_lab("robot-arm").info.functions.at(0);
+    const fw::UnitFunction& f = fw::test::this_lab().info.functions.at(0);
     const nlohmann::json result = f.call(nlohmann::json::array({30, -45, 20}));
     CHECK(matrices_match(fw::from_json_value<std::vector<glm::mat4>>(result), kDefault));
     CHECK(!fw::test::thrown([&] { f.call(nlohmann::json::array({30, -45})); }).empty());
@@ -299,16 +297,16 @@ TEST_CASE("robot-arm: the stats give the joints where the sheet puts them") {
 }
 
 TEST_CASE("robot-arm: dragging turns the shoulder round and the hand up to its limits") {
-    const fw::RegisteredLab& lab = fw::find_lab("robot-arm");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     std::unique_ptr<fw::Lab> arm = lab.create();
     fw::ParamValues p = fw::default_params(lab);
-    CHECK(arm->on_drag(p, 320, 0));  // +160 degrees: 30 + 160 = 190 = -170
+    CHECK(arm->on_drag(p, fw::Frame{}, 320, 0));  // +160 degrees: 30 + 160 = 190 = -170
     CHECK(p.number("shoulder") == doctest::Approx(-170));
-    CHECK(arm->on_drag(p, 0, 600));  // +300 degrees from -45: stops at 150
+    CHECK(arm->on_drag(p, fw::Frame{}, 0, 600));  // +300 degrees from -45: stops at 150
     CHECK(p.number("hand") == doctest::Approx(150));
-    CHECK(arm->on_scroll(p, 100));
+    CHECK(arm->on_scroll(p, fw::Frame{}, 100));
     CHECK(p.number("grip") == doctest::Approx(90));
-    CHECK(arm->on_scroll(p, -100));
+    CHECK(arm->on_scroll(p, fw::Frame{}, -100));
     CHECK(p.number("grip") == doctest::Approx(0));
 }
 

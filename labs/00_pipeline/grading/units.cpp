@@ -13,6 +13,6 @@ std::vector<glm::vec3> expand_quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::v
 
 }  // namespace
 
-COURSE_REFERENCE(pipeline, expand_quad, &expand_quad,
+COURSE_REFERENCE(expand_quad, &expand_quad,
                  {grading::vec(3, -10, 10), grading::vec(3, -10, 10), grading::vec(3, -10, 10),
                   grading::vec(3, -10, 10)});

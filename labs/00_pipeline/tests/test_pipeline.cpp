@@ -1,5 +1,5 @@
 // Lab 0 `pipeline`. Every expectation is computed here from the sheet's
-// numbers (LABS.md, labs/00_pipeline/README.md), never read from a reference
+// numbers (docs/labs.md, labs/00_pipeline/README.md), never read from a reference
 // image or from the lab's own code.
 #include <algorithm>
 #include <cmath>
@@ -26,7 +26,7 @@ int pixel(float ndc) { return static_cast<int>(std::floor((ndc + 1.0f) * 0.5f * 
 using fw::test::Settings;
 
 struct Pipeline : fw::test::LabUnderTest {
-    Pipeline() : LabUnderTest("pipeline") {}
+    Pipeline() : LabUnderTest() {}
 };
 
 long differing_pixels(const fw::Image& a, const fw::Image& b) {
@@ -118,16 +118,14 @@ std::vector<ProjectedFace> project_cube(float yaw, float pitch) {
 }  // namespace
 
 TEST_CASE("pipeline: the declaration has the sheet's parameters and defaults") {
-    const fw::RegisteredLab& lab = fw::find_lab("pipeline");
-    CHECK(lab.info.number == 0);
-    CHECK(lab.info.dir == "00_pipeline");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     const fw::ParamValues p = fw::default_params(lab);
-    CHECK(p.choice("scene") == "order");
+    CHECK(p.text("scene") == "order");
     CHECK(p.flag("depth_test"));
-    CHECK(p.choice("first") == "red");
-    CHECK(p.choice("storage") == "indexed");
-    CHECK(p.choice("primitive") == "triangles");
-    CHECK(p.choice("cull") == "back");
+    CHECK(p.text("first") == "red");
+    CHECK(p.text("storage") == "indexed");
+    CHECK(p.text("primitive") == "triangles");
+    CHECK(p.text("cull") == "back");
     for (const fw::Param& param : lab.info.params) {
         INFO("parameter " << param.name);
         CHECK(!param.help_text.empty());
@@ -306,7 +304,7 @@ TEST_CASE("pipeline: checkpoints.json: its probes and stats hold for the solutio
     fw::test::for_each_checkpoint(
         lab.lab, lab.renderer, 6,
         [&](const fw::Checkpoint& cp, const fw::ParamValues& params, const fw::RenderOutput& out) {
-            scenes.push_back(params.choice("scene"));
+            scenes.push_back(params.text("scene"));
             fw::test::check_probes_and_stats(cp.checks, out);
         });
     for (const char* scene : {"order", "indexed", "primitives", "culling"})

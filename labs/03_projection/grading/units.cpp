@@ -36,17 +36,17 @@ glm::vec3 ref_viewport(glm::vec3 ndc, int width, int height) {
 // with the view almost parallel to up is ill-conditioned for GLM and the
 // student alike; lookAt's tolerance in checkpoints.json (1e-4) allows for
 // the rare ones that come close.
-COURSE_REFERENCE(projection, lookAt, &ref_lookAt,
+COURSE_REFERENCE(lookAt, &ref_lookAt,
                  {grading::vec(3, -10, 10), grading::vec(3, -10, 10), grading::unit_vec(3)})
 // Fields of view within the lab's range; far always beyond near.
-COURSE_REFERENCE(projection, perspective, &ref_perspective,
+COURSE_REFERENCE(perspective, &ref_perspective,
                  {grading::scalar(10, 150), grading::scalar(0.25, 4), grading::scalar(0.01, 10),
                   grading::scalar(11, 1000)})
-COURSE_REFERENCE(projection, orthographic, &ref_orthographic,
+COURSE_REFERENCE(orthographic, &ref_orthographic,
                  {grading::scalar(-10, -0.1), grading::scalar(0.1, 10), grading::scalar(-10, -0.1),
                   grading::scalar(0.1, 10), grading::scalar(-5, 5), grading::scalar(6, 100)})
-COURSE_REFERENCE(projection, perspective01, &ref_perspective01,
+COURSE_REFERENCE(perspective01, &ref_perspective01,
                  {grading::scalar(10, 150), grading::scalar(0.25, 4), grading::scalar(0.01, 10),
                   grading::scalar(11, 1000)})
-COURSE_REFERENCE(projection, viewport, &ref_viewport,
+COURSE_REFERENCE(viewport, &ref_viewport,
                  {grading::vec(3, -1.5, 1.5), grading::integer(1, 4096), grading::integer(1, 4096)})

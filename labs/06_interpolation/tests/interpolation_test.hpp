@@ -1,6 +1,6 @@
 // Lab 6 `interpolation`, shared by its test files: the lab renderer and the
-// sheet's numbers (LABS.md, labs/06_interpolation/README.md), written here
-// again so that the tests never read them from the lab's code.
+// sheet's numbers (labs/06_interpolation/README.md), written here again so
+// that the tests never read them from the lab's code.
 #pragma once
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -18,9 +18,8 @@ constexpr int kSize = 512;
 
 using fw::test::Settings;
 
-struct Lab : fw::test::LabUnderTest {
-    Lab() : LabUnderTest("interpolation") {}
-};
+// The lab of this test's folder, created once per test case.
+using Lab = fw::test::LabUnderTest;
 
 inline glm::vec3 rgb(const fw::Image& img, int x, int y) { return fw::test::rgb_at(img, x, y); }
 

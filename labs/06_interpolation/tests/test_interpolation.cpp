@@ -1,6 +1,6 @@
 // Lab 6 `interpolation`: the declaration and the scenes triangle and plane.
-// Every expectation is computed here from the sheet's numbers (LABS.md,
-// labs/06_interpolation/README.md) and the GL spec's interpolation rules,
+// Every expectation is computed here from the sheet's numbers
+// (labs/06_interpolation/README.md) and the GL spec's interpolation rules,
 // never read from a reference image or from the lab's own code.
 #include <algorithm>
 #include <cmath>
@@ -144,12 +144,10 @@ PixelTally check_plane(const fw::Image& img, Rule rule, int checks, const char* 
 }  // namespace
 
 TEST_CASE("interpolation: the declaration has the sheet's parameters and defaults") {
-    const fw::RegisteredLab& lab = fw::find_lab("interpolation");
-    CHECK(lab.info.number == 6);
-    CHECK(lab.info.dir == "06_interpolation");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     const fw::ParamValues p = fw::default_params(lab);
-    CHECK(p.choice("scene") == "triangle");
-    CHECK(p.choice("qualifier") == "smooth");
+    CHECK(p.text("scene") == "triangle");
+    CHECK(p.text("qualifier") == "smooth");
     CHECK(p.color("color_a") == glm::vec3(1, 0, 0));
     CHECK(p.color("color_b") == glm::vec3(1, 1, 1));
     CHECK(p.color("color_c") == glm::vec3(1, 1, 1));
@@ -264,7 +262,7 @@ TEST_CASE("interpolation: checkpoints.json: its probes and stats hold for the so
     fw::test::for_each_checkpoint(
         lab.lab, lab.renderer, 5,
         [&](const fw::Checkpoint& cp, const fw::ParamValues& params, const fw::RenderOutput& out) {
-            scenes.push_back(params.choice("scene"));
+            scenes.push_back(params.text("scene"));
             fw::test::check_probes_and_stats(cp.checks, out);
         });
     for (const char* scene : {"triangle", "plane", "shading"})

@@ -4,6 +4,7 @@
 
 #include "framework/error.hpp"
 #include "grading/units/reference.hpp"
+#include "transforms_math.hpp"
 
 namespace {
 
@@ -28,29 +29,30 @@ glm::mat4 ref_rotate(float degrees, glm::vec3 axis) {
     return glm::rotate(kIdentity, glm::radians(degrees), axis);
 }
 
-// The lab's `order` parameter lists the permutations of "trs" in this order;
-// "compose" takes the index. M is the product left to right.
-constexpr const char* kOrders[] = {"trs", "tsr", "rts", "rst", "str", "srt"};
+// "compose" takes an index into kOrders (transforms_math.hpp: the names of
+// the lab's `order` parameter; course uses the names, not the lab's code).
+// M is the product left to right.
 
 glm::mat4 ref_compose(float tx, float ty, float angle, float sx, float sy, int order) {
-    if (order < 0 || order > 5)
+    if (order < 0 || order >= transforms::kOrderCount)
         throw fw::Error("compose: order index " + std::to_string(order) + " is not in 0..5");
     const glm::mat4 T = ref_translate({tx, ty, 0}), R = ref_rotate_z(angle),
                     S = ref_scale({sx, sy, 1});
     glm::mat4 M = kIdentity;
-    for (const char* c = kOrders[order]; *c; ++c) M = M * (*c == 't' ? T : *c == 'r' ? R : S);
+    for (const char* c = transforms::kOrders[order]; *c; ++c)
+        M = M * (*c == 't' ? T : *c == 'r' ? R : S);
     return M;
 }
 
 }  // namespace
 
-COURSE_REFERENCE(transforms, translate, &ref_translate, {grading::vec(3, -10, 10)})
-COURSE_REFERENCE(transforms, scale, &ref_scale, {grading::vec(3, -10, 10)})
-COURSE_REFERENCE(transforms, rotateX, &ref_rotate_x, {grading::scalar(-720, 720)})
-COURSE_REFERENCE(transforms, rotateY, &ref_rotate_y, {grading::scalar(-720, 720)})
-COURSE_REFERENCE(transforms, rotateZ, &ref_rotate_z, {grading::scalar(-720, 720)})
-COURSE_REFERENCE(transforms, rotate, &ref_rotate,
+COURSE_REFERENCE(translate, &ref_translate, {grading::vec(3, -10, 10)})
+COURSE_REFERENCE(scale, &ref_scale, {grading::vec(3, -10, 10)})
+COURSE_REFERENCE(rotateX, &ref_rotate_x, {grading::scalar(-720, 720)})
+COURSE_REFERENCE(rotateY, &ref_rotate_y, {grading::scalar(-720, 720)})
+COURSE_REFERENCE(rotateZ, &ref_rotate_z, {grading::scalar(-720, 720)})
+COURSE_REFERENCE(rotate, &ref_rotate,
                  {grading::scalar(-720, 720), grading::vec(3, -10, 10)})
-COURSE_REFERENCE(transforms, compose, &ref_compose,
+COURSE_REFERENCE(compose, &ref_compose,
                  {grading::scalar(-2, 2), grading::scalar(-2, 2), grading::scalar(-360, 360),
                   grading::scalar(-3, 3), grading::scalar(-3, 3), grading::integer(0, 5)})

@@ -42,8 +42,5 @@ std::vector<glm::mat4> ref_arm_matrices(float shoulder, float hand, float grip) 
 
 }  // namespace
 
-// The macro spells the lab id from its tokens; clang-format would space out the hyphen.
-// clang-format off
-COURSE_REFERENCE(robot-arm, arm_matrices, &ref_arm_matrices,
+COURSE_REFERENCE(arm_matrices, &ref_arm_matrices,
                  {grading::scalar(-180, 180), grading::scalar(-150, 150), grading::scalar(0, 90)});
-// clang-format on

@@ -1,4 +1,4 @@
-// The counting rules of tests/labs/tessellation_count.cpp against values
+// The counting rules of tessellation_count.cpp against values
 // worked out by hand from the GL 4.3 specification's text (section 11.2.2)
 // and against closed forms summed ring by ring. No GL here.
 #include <doctest/doctest.h>

@@ -1,7 +1,8 @@
 // Lab 6 `interpolation`, scene shading: Gouraud, Phong and toon shading of
 // the unit sphere. Expectations come from a CPU ray cast of the exact sphere
-// and the lecture's model with the sheet's numbers (LABS.md), never from a
-// reference image or the lab's code.
+// and the lecture's model with the sheet's numbers
+// (labs/06_interpolation/README.md), never from a reference image or the
+// lab's code.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -206,13 +207,17 @@ TEST_CASE("interpolation: shading: subdiv n draws 20 * 4^n triangles from 10 * 4
 }
 
 TEST_CASE("interpolation: shading: dragging moves the light in x and y") {
-    const fw::RegisteredLab& registered = fw::find_lab("interpolation");
     Lab lab;
-    fw::ParamValues p = fw::default_params(registered);
-    CHECK_FALSE(lab.renderer.lab().on_drag(p, 10, 10));  // scene triangle: no light
+    fw::ParamValues p = fw::default_params(lab.lab);
+    // scene triangle: no light
+    CHECK_FALSE(lab.renderer.lab().on_drag(p, fw::Frame{}, 10, 10));
     p.set("scene", "shading");
-    CHECK(lab.renderer.lab().on_drag(p, 50, -25));
+    CHECK(lab.renderer.lab().on_drag(p, fw::Frame{}, 50, -25));
     CHECK(p.number("light_x") > 2.0f);
     CHECK(p.number("light_y") < 2.0f);
     CHECK(p.number("light_z") == 3.0f);
+    // The light stays within its declared range, [-10, 10].
+    CHECK(lab.renderer.lab().on_drag(p, fw::Frame{}, 5000, -5000));
+    CHECK(p.number("light_x") == 10.0f);
+    CHECK(p.number("light_y") == -10.0f);
 }

@@ -1,5 +1,5 @@
 // Lab 1 `transforms`: the rendered scene and the checkpoints. Every pixel
-// expectation is computed here from the sheet's numbers (LABS.md,
+// expectation is computed here from the sheet's numbers (docs/labs.md,
 // labs/01_transforms/README.md) with closed forms, never read from a
 // reference image or from the lab's own code. The matrices themselves are
 // tested in test_transforms_math.cpp.
@@ -12,7 +12,7 @@
 #include "framework/checkpoints.hpp"
 #include "framework/lab.hpp"
 #include "framework/render.hpp"
-#include "tests/labs/transforms_glm.hpp"
+#include "transforms_glm.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace transforms_test;
@@ -115,7 +115,7 @@ long mismatches(const fw::Image& img, const Setting& s) {
 }
 
 struct Transforms {
-    const fw::RegisteredLab& lab = fw::find_lab("transforms");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     fw::LabRenderer renderer{lab, fw::test::context_info()};
 
     fw::ParamValues params(const Setting& s) const {
@@ -133,20 +133,18 @@ struct Transforms {
 
 Setting setting_of(const fw::ParamValues& p) {
     return {p.number("tx"), p.number("ty"), p.number("angle"),
-            p.number("sx"), p.number("sy"), p.choice("order")};
+            p.number("sx"), p.number("sy"), p.text("order")};
 }
 
 }  // namespace
 
 TEST_CASE("transforms: the declaration has the sheet's parameters, defaults and functions") {
-    const fw::RegisteredLab& lab = fw::find_lab("transforms");
-    CHECK(lab.info.number == 1);
-    CHECK(lab.info.dir == "01_transforms");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     const fw::ParamValues p = fw::default_params(lab);
     for (const char* zero : {"tx", "ty", "angle"}) CHECK(p.number(zero) == 0.0f);
     CHECK(p.number("sx") == 1.0f);
     CHECK(p.number("sy") == 1.0f);
-    CHECK(p.choice("order") == "trs");
+    CHECK(p.text("order") == "trs");
     for (const fw::Param& param : lab.info.params) {
         INFO("parameter " << param.name);
         CHECK(!param.help_text.empty());
@@ -237,12 +235,12 @@ TEST_CASE("transforms: dragging moves the object by the mouse's distance in worl
     fw::ParamValues p = lab.params({});
     lab.renderer.render(p, kSize, kSize);
     // 512 pixels span the 4 world units of [-2, 2].
-    CHECK(lab.renderer.lab().on_drag(p, 64, -32));
+    CHECK(lab.renderer.lab().on_drag(p, fw::Frame{}, 64, -32));
     CHECK(p.number("tx") == doctest::Approx(0.5));
     CHECK(p.number("ty") == doctest::Approx(-0.25));
-    lab.renderer.lab().on_drag(p, 5000, 0);
+    lab.renderer.lab().on_drag(p, fw::Frame{}, 5000, 0);
     CHECK(p.number("tx") == 2.0f);
-    CHECK(lab.renderer.lab().on_scroll(p, 2));
+    CHECK(lab.renderer.lab().on_scroll(p, fw::Frame{}, 2));
     CHECK(p.number("angle") == 30.0f);
 }
 

@@ -1,5 +1,5 @@
 // Lab 3 `projection`, rendered. Every expectation is computed here from the
-// sheet's numbers (LABS.md, labs/03_projection/README.md) with closed forms
+// sheet's numbers (docs/labs.md, labs/03_projection/README.md) with closed forms
 // or GLM, never read from a reference image or from the lab's own code.
 #include <algorithm>
 #include <cmath>
@@ -31,7 +31,7 @@ const glm::vec3 kZRed{0.9f, 0.2f, 0.2f}, kZBlue{0.2f, 0.2f, 0.9f};
 using fw::test::Settings;
 
 struct Projection : fw::test::LabUnderTest {
-    Projection() : LabUnderTest("projection") {}
+    Projection() : LabUnderTest() {}
 };
 
 // The camera the sheet defines for these parameters, from GLM.
@@ -40,7 +40,7 @@ glm::mat4 clip_from_world(const fw::ParamValues& p, int w, int h) {
     const glm::vec3 eye(p.number("eye_x"), p.number("eye_y"), p.number("eye_z"));
     const glm::vec3 target(p.number("target_x"), p.number("target_y"), p.number("target_z"));
     const float s = p.number("ortho_size");
-    const glm::mat4 P = p.choice("mode") == "orthographic"
+    const glm::mat4 P = p.text("mode") == "orthographic"
                             ? glm::ortho(-s * aspect, s * aspect, -s, s, n, f)
                             : glm::perspective(glm::radians(p.number("fov")), aspect, n, f);
     return P * glm::lookAt(eye, target, glm::vec3(0, 1, 0));
@@ -353,7 +353,7 @@ TEST_CASE(
     fw::test::for_each_checkpoint(
         lab.lab, lab.renderer, 5,
         [&](const fw::Checkpoint& cp, const fw::ParamValues& params, const fw::RenderOutput& out) {
-            scenes.push_back(params.choice("scene"));
+            scenes.push_back(params.text("scene"));
             for (const nlohmann::json& check : cp.checks) {
                 CAPTURE(check.dump());
                 if (check["kind"] == "probe") {

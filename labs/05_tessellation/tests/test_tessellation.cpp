@@ -1,7 +1,7 @@
-// Lab 5 `tessellation`. Every expectation is computed here from the sheet's
-// numbers (LABS.md, labs/05_tessellation/README.md) and from the GL 4.3
-// specification's tessellation rules (tessellation_count.cpp), never read
-// from a reference image or from the lab's own code.
+// Lab 5 `tessellation`, the lab of this test's folder. Every expectation is
+// computed here from the sheet's numbers (labs/05_tessellation/README.md) and
+// from the GL 4.3 specification's tessellation rules (tessellation_count.cpp),
+// never read from a reference image or from the lab's own code.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -36,9 +36,8 @@ const std::pair<const char*, Spacing> kSpacings[] = {{"equal", Spacing::Equal},
                                                      {"fractional_even", Spacing::FractionalEven},
                                                      {"fractional_odd", Spacing::FractionalOdd}};
 
-// The lab, created once per test case.
+// The lab of this folder, created once per test case.
 struct Tessellation : fw::test::LabUnderTest {
-    Tessellation() : LabUnderTest("tessellation") {}
     // Square frames of `size`.
     fw::RenderOutput render(const Settings& settings, int size = kSize) {
         return LabUnderTest::render(settings, size, size);
@@ -81,14 +80,12 @@ float pixels_left_of(glm::vec2 a, glm::vec2 b, int x, int y) {
 }  // namespace
 
 TEST_CASE("tessellation: the declaration has the sheet's parameters and defaults") {
-    const fw::RegisteredLab& lab = fw::find_lab("tessellation");
-    CHECK(lab.info.number == 5);
-    CHECK(lab.info.dir == "05_tessellation");
+    const fw::RegisteredLab& lab = fw::test::this_lab();
     const fw::ParamValues p = fw::default_params(lab);
-    CHECK(p.choice("scene") == "triangle");
+    CHECK(p.text("scene") == "triangle");
     CHECK(p.number("inner") == 4.0f);
     CHECK(p.number("outer") == 4.0f);
-    CHECK(p.choice("spacing") == "equal");
+    CHECK(p.text("spacing") == "equal");
     CHECK(p.flag("wireframe"));
     CHECK(p.number("D") == doctest::Approx(0.15));
     CHECK(p.number("K") == 2.0f);
@@ -399,7 +396,7 @@ TEST_CASE("tessellation: checkpoints.json: its probes and stats hold for the sol
     fw::test::for_each_checkpoint(
         lab.lab, lab.renderer, 5,
         [&](const fw::Checkpoint& cp, const fw::ParamValues& params, const fw::RenderOutput& out) {
-            scenes.push_back(params.choice("scene"));
+            scenes.push_back(params.text("scene"));
             for (const nlohmann::json& check : cp.checks) {
                 CAPTURE(check.dump());
                 if (check["kind"] == "stat") {
@@ -408,9 +405,9 @@ TEST_CASE("tessellation: checkpoints.json: its probes and stats hold for the sol
                     CHECK(check["stat"] == "primitives_generated");
                     Spacing rule = Spacing::Equal;
                     for (const auto& [name, r] : kSpacings)
-                        if (params.choice("spacing") == name) rule = r;
+                        if (params.text("spacing") == name) rule = r;
                     CHECK(check["equals"].get<long>() ==
-                          expected_primitives(params.choice("scene"), params.number("inner"),
+                          expected_primitives(params.text("scene"), params.number("inner"),
                                               params.number("outer"), rule));
                 }
             }

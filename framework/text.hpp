@@ -1,0 +1,49 @@
+// Small text helpers that messages throughout the framework and `course`
+// share, so that each idiom is written once.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace fw {
+
+namespace detail {
+// std::identity, which C++17 lacks.
+struct Identity {
+    template <class T>
+    const T& operator()(const T& value) const {
+        return value;
+    }
+};
+}  // namespace detail
+
+// The items of `items` with `sep` between them, each passed through `proj`
+// first (a member pointer or a function returning text; by default the item
+// itself):
+//
+//   join(std::vector<std::string>{"a", "b"}, ", ")   // "a, b"
+//   join(labs, ", ", &LabData::id)                    // "00_pipeline, 01_transforms"
+//   join(errors, ", ", gl_enum_name)                  // "GL_INVALID_ENUM, ..."
+template <class Range, class Proj = detail::Identity>
+std::string join(const Range& items, std::string_view sep, Proj proj = {}) {
+    std::string out;
+    bool first = true;
+    for (auto&& item : items) {
+        if (!first) out += sep;
+        first = false;
+        out += std::invoke(proj, item);
+    }
+    return out;
+}
+
+// A GL object's label as messages show it: 'quad vertices', or (unlabelled)
+// for an empty label. Not named `quoted`: std::quoted would compete through
+// argument-dependent lookup wherever <iomanip> is included.
+std::string quoted_label(const std::string& label);
+
+// `s` as one word for /bin/sh: in single quotes, each ' written as '\''.
+//   shell_quote("it's")   // 'it'\''s'
+std::string shell_quote(std::string_view s);
+
+}  // namespace fw

@@ -1,0 +1,388 @@
+// `course autograde` (gradescope.hpp): what Gradescope runs for each
+// submission, through the run_autograder shim, as root. It puts the submitted
+// files in place of the solution's, rebuilds `lab`, grades it with `course
+// grade` and copies the results to results/results.json. Whatever the
+// submission does, it leaves a complete results.json: a submission that does
+// not build, or a grader that fails, scores 0 on every check with the reason
+// in the output.
+#include <fcntl.h>
+#include <pwd.h>
+#include <sched.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "grading/child.hpp"
+#include "grading/gradescope.hpp"
+#include "grading/report_text.hpp"
+
+namespace fs = std::filesystem;
+
+namespace grading {
+
+namespace {
+
+constexpr const char* kPrefix = "run_autograder: ";
+
+// What the shell's $? says of a child: its exit status, or 128 + the signal.
+int shell_status(int wait_status) {
+    if (WIFEXITED(wait_status)) return WEXITSTATUS(wait_status);
+    if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
+    return 255;
+}
+
+// Writes all of `bytes` to `fd`; false when it cannot.
+bool write_all(int fd, const char* bytes, size_t size) {
+    while (size > 0) {
+        const ssize_t n = write(fd, bytes, size);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        bytes += n;
+        size -= static_cast<size_t>(n);
+    }
+    return true;
+}
+
+// Copies everything readable from `from` to `log` and to our stdout, like
+// tee: a log that cannot be written does not stop the copy to stdout.
+void tee(int from, int log) {
+    char buf[65536];
+    bool log_ok = true;
+    for (;;) {
+        const ssize_t n = read(from, buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return;
+        log_ok = log_ok && write_all(log, buf, static_cast<size_t>(n));
+        std::fwrite(buf, 1, static_cast<size_t>(n), stdout);
+        std::fflush(stdout);
+    }
+}
+
+// Runs `argv` (its first word looked up in PATH) with no stdin and its
+// stdout and stderr written to `log`, and also to our stdout when `echo`.
+// Returns its status as the shell would report it; 127 when it cannot start.
+int run_logged(const std::vector<std::string>& argv, const fs::path& log, bool echo) {
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    const int log_fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    const int devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
+    int fds[2] = {-1, -1};
+    if (log_fd < 0 || devnull < 0 || (echo && pipe2(fds, O_CLOEXEC) != 0))
+        throw fw::Error("cannot set up the log '" + log.string() + "': " + std::strerror(errno));
+    const int out = echo ? fds[1] : log_fd;
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (dup2(devnull, 0) >= 0 && dup2(out, 1) >= 0 && dup2(out, 2) >= 0)
+            execvp(args[0], args.data());
+        std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
+        _exit(127);
+    }
+    if (echo) close(fds[1]);
+    if (pid > 0 && echo) tee(fds[0], log_fd);
+    if (echo) close(fds[0]);
+    close(devnull);
+    close(log_fd);
+    if (pid < 0) throw fw::Error(std::string("cannot fork: ") + std::strerror(errno));
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    return shell_status(status);
+}
+
+// The CPUs this process may use, as nproc counts them.
+unsigned usable_cpus() {
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0)
+        return static_cast<unsigned>(CPU_COUNT(&set));
+    return 1;
+}
+
+std::string real_path(const fs::path& path) {
+    std::error_code ec;
+    const fs::path real = fs::canonical(path, ec);
+    return ec ? "" : real.string();
+}
+
+// Whether `a` and `b` are regular files with the same bytes (cmp -s).
+bool same_contents(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    if (!fs::is_regular_file(a, ec) || !fs::is_regular_file(b, ec) ||
+        fs::file_size(a, ec) != fs::file_size(b, ec))
+        return false;
+    std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
+    try {
+        return x && y &&
+               std::equal(std::istreambuf_iterator<char>(x), std::istreambuf_iterator<char>(),
+                          std::istreambuf_iterator<char>(y), std::istreambuf_iterator<char>());
+    } catch (const std::ios_base::failure&) {
+        return false;  // a read error: copy it again
+    }
+}
+
+// Overwrites `to` in place (its mode and owner stay; its time changes).
+bool copy_contents(const fs::path& from, const fs::path& to) {
+    std::ifstream in(from, std::ios::binary);
+    if (!in) return false;
+    std::ofstream out(to, std::ios::binary | std::ios::trunc);
+    if (!out) return false;
+    // Streaming an empty file would set failbit: an empty file is copied too.
+    if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
+    return !in.bad() && out.flush();
+}
+
+std::vector<std::string> read_lines(const fs::path& path) {
+    std::ifstream in(path);
+    if (!in)
+        throw fw::Error("cannot read '" + path.string() +
+                        "': the autograder folder lacks its list of student files; write it "
+                        "again with `course gradescope`");
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) lines.push_back(line);
+    return lines;
+}
+
+// Regular files named `name` below `dir`, not through links (as find -type f).
+std::vector<fs::path> files_named(const fs::path& dir, const std::string& name) {
+    std::vector<fs::path> found;
+    std::error_code ec;
+    fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+    for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+        if (it->path().filename() == name && fs::is_regular_file(it->symlink_status()))
+            found.push_back(it->path());
+    return found;
+}
+
+// Which file stands for one student file, and how the log describes it.
+struct Chosen {
+    fs::path from;
+    std::string how;
+};
+
+// Picks the submitted files: each file students edit is taken from the
+// submission at the same path, else from the one file of that name anywhere
+// in the submission (uploads may be flat), else from the student version;
+// never the solution. Links that leave the submission, and anything but
+// regular files, are not taken.
+class SubmittedFiles {
+public:
+    SubmittedFiles(const fs::path& submission, const fs::path& versions,
+                   const std::vector<std::string>& files)
+        : submission_(submission), real_(real_path(submission)), versions_(versions) {
+        for (const std::string& rel : files) ++names_[fs::path(rel).filename().string()];
+    }
+
+    Chosen choose(const std::string& rel) const {
+        const std::string name = fs::path(rel).filename().string();
+        if (inside(submission_ / rel)) return {submission_ / rel, "submitted"};
+        Chosen student{versions_ / rel, "not submitted: graded with the student version"};
+        // A name two student files share says nothing of which one it is.
+        if (real_.empty() || names_.at(name) > 1) return student;
+        const std::vector<fs::path> found = files_named(real_, name);
+        if (found.size() == 1 && inside(found[0]))
+            return {found[0], "submitted as " + found[0].string().substr(real_.size() + 1)};
+        if (found.size() > 1)
+            student.how = std::to_string(found.size()) + " files named " + name +
+                          " were submitted, none at " + rel + ": graded with the student version";
+        return student;
+    }
+
+private:
+    // Whether `path` leads to a regular file inside the submission.
+    bool inside(const fs::path& path) const {
+        const std::string real = real_path(path);
+        return !real_.empty() && !real.empty() && fs::is_regular_file(real) &&
+               real.rfind(real_ + "/", 0) == 0;
+    }
+
+    fs::path submission_;
+    std::string real_;  // "" when there is no submission folder
+    fs::path versions_;
+    std::map<std::string, int> names_;  // file name -> how many student files have it
+};
+
+void write_json(const fs::path& path, const nlohmann::ordered_json& json) {
+    report::write_text_file(path.string(), json.dump(2) + "\n");
+}
+
+class Autograder {
+public:
+    explicit Autograder(const AutogradeOptions& options)
+        : options_(options),
+          source_(fs::path(options.root) / "source"),
+          results_(fs::path(options.root) / "results"),
+          lab_(source_ / "build" / "bin" / "lab"),
+          as_user_(geteuid() == 0 && getpwnam(options.user.c_str()) != nullptr) {}
+
+    void run() {
+        prepare_results();
+        try {
+            work_ = std::make_unique<WorkDir>(nullptr);
+        } catch (const fw::Error&) {
+            const char* tmp = std::getenv("TMPDIR");
+            const std::string where = tmp && *tmp ? tmp : "/tmp";
+            write_json(
+                results_ / "results.json",
+                {{"score", 0},
+                 {"output", "the autograder could not create a work directory in " + where}});
+            return;
+        }
+        if (place_submitted_files() && build_lab()) grade();
+    }
+
+    // Reports that fail every check with `reason` and the tail of `log` ("":
+    // none); if even that fails, a results.json with the score and the reason.
+    void not_graded(const std::string& reason, const std::string& log) {
+        std::printf("%s%s\n", kPrefix, reason.c_str());
+        std::fflush(stdout);
+        const fs::path grade = results_ / "grade";
+        std::error_code ec;
+        fs::remove_all(grade, ec);
+        try {
+            not_graded_command(reason, log, grade.string());
+            fs::copy_file(grade / "results.json", results_ / "results.json",
+                          fs::copy_options::overwrite_existing);
+        } catch (const std::exception& e) {
+            std::printf("course autograde: error: %s\n", e.what());
+            write_fallback(reason, log, e.what());
+        }
+    }
+
+private:
+    // The results are root's: submitted code must not write them.
+    void prepare_results() {
+        fs::create_directories(results_);
+        std::error_code ec;
+        fs::remove(results_ / "results.json", ec);
+        fs::remove_all(results_ / "grade", ec);
+        if (geteuid() == 0 && chown(results_.c_str(), 0, 0) == 0) chmod(results_.c_str(), 0755);
+    }
+
+    bool place_submitted_files() {
+        std::printf("%sthe submitted files\n", kPrefix);
+        const std::vector<std::string> files = read_lines(source_ / "student_files.txt");
+        const SubmittedFiles submitted(fs::path(options_.root) / "submission",
+                                       source_ / "student_versions", files);
+        for (const std::string& rel : files) {
+            const Chosen chosen = submitted.choose(rel);
+            const fs::path to = source_ / rel;
+            // Unchanged files keep their timestamps, so the rebuild stays small.
+            if (!same_contents(chosen.from, to) && !copy_contents(chosen.from, to)) {
+                not_graded(
+                    "the autograder could not copy " + chosen.from.string() + " to " + to.string(),
+                    "");
+                return false;
+            }
+            std::printf("  %-48s %s\n", rel.c_str(), chosen.how.c_str());
+        }
+        return true;
+    }
+
+    // Only `lab` holds submitted code; course is the autograder's own build.
+    // The compiler runs as the user, who cannot read references or checkpoint
+    // files, so no #include can quote them into the message.
+    bool build_lab() {
+        std::vector<std::string> command;
+        if (as_user_)
+            // A compiler cache, where the image has one, is root's: the user compiles plainly.
+            command = {"runuser", "-u", options_.user, "--", "env", "CCACHE_DISABLE=1"};
+        command.insert(command.end(), {"cmake", "--build", (source_ / "build").string(), "--target",
+                                       "lab", "-j", std::to_string(usable_cpus())});
+        const std::string as = as_user_ ? " as " + options_.user : "";
+        std::printf("%sbuilding lab%s\n", kPrefix, as.c_str());
+        std::error_code ec;
+        fs::remove(lab_, ec);
+        const fs::path log = fs::path(work_->path()) / "build.log";
+        if (run_logged(command, log, false) == 0 && access(lab_.c_str(), X_OK) == 0) return true;
+        not_graded(
+            "the submission does not build (the compiler's message is at the top of the results)",
+            log.string());
+        return false;
+    }
+
+    void grade() {
+        std::vector<std::string> command = {own_path(),  "grade",
+                                            "--lab",     lab_.string(),
+                                            "--out",     (results_ / "grade").string(),
+                                            "--timeout", options_.timeout};
+        std::string shown = "course grade --timeout " + options_.timeout;
+        if (as_user_) {
+            command.insert(command.end(), {"--run-as", options_.user});
+            shown += " --run-as " + options_.user;
+        }
+        std::printf("%s%s\n", kPrefix, shown.c_str());
+        const fs::path log = fs::path(work_->path()) / "grade.log";
+        const int status = run_logged(command, log, true);
+        std::error_code ec;
+        if (status <= 1 && fs::exists(results_ / "grade" / "results.json")) {
+            fs::copy_file(results_ / "grade" / "results.json", results_ / "results.json",
+                          fs::copy_options::overwrite_existing, ec);
+            if (!ec) return;
+        }
+        not_graded("course grade failed (exit status " + std::to_string(status) +
+                       "), so nothing was graded; please tell the course staff",
+                   log.string());
+    }
+
+    static std::string own_path() {
+        std::error_code ec;
+        const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+        if (ec) throw fw::Error("cannot find course's own executable (/proc/self/exe)");
+        return self.string();
+    }
+
+    void write_fallback(const std::string& reason, const std::string& log,
+                        const std::string& error) {
+        std::string text = reason + "\n\n";
+        try {
+            if (!log.empty()) text += log_tail(log, 200) + "\n";
+        } catch (const std::exception& e) {
+            text += e.what() + std::string("\n");
+        }
+        text += "\n" + error + "\n";
+        std::error_code ec;
+        fs::create_directories(results_, ec);
+        write_json(results_ / "results.json", {{"score", 0}, {"output", report::clean_text(text)}});
+    }
+
+    AutogradeOptions options_;
+    fs::path source_, results_, lab_;
+    bool as_user_;                   // build and grade as options_.user (root, and the user exists)
+    std::unique_ptr<WorkDir> work_;  // for the logs
+};
+
+}  // namespace
+
+int autograde_command(const AutogradeOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    // course grades this tree, and `lab` reads its shaders from it.
+    setenv("LAB_ROOT", (fs::path(options.root) / "source").c_str(), 1);
+    unsetenv("LAB_SHADER_DIR");
+    Autograder autograder(options);
+    try {
+        autograder.run();
+    } catch (const std::exception& e) {
+        autograder.not_graded(std::string("the autograder failed: ") + e.what(), "");
+    }
+    const auto seconds =
+        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start);
+    std::printf("%sdone in %lld s\n", kPrefix, static_cast<long long>(seconds.count()));
+    return 0;
+}
+
+}  // namespace grading

@@ -1,0 +1,69 @@
+// `course autograde`'s reports of a submission it could not grade
+// (gradescope.hpp): every check failed with the reason.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "framework/error.hpp"
+#include "grading/checks.hpp"
+#include "grading/child.hpp"
+#include "grading/commands.hpp"
+#include "grading/gradescope.hpp"
+#include "grading/release.hpp"
+#include "grading/report_text.hpp"
+#include "grading/reports.hpp"
+
+namespace grading {
+
+std::string log_tail(const std::string& path, int lines) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw fw::Error("cannot read the log '" + path + "': check that it exists and is readable");
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    const std::streamoff from = std::max<std::streamoff>(0, size - std::streamoff(kMiB));
+    in.seekg(from);
+    std::string text(static_cast<size_t>(size - from), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    size_t start = text.size();
+    for (int n = 0; n < lines && start != std::string::npos && start > 0; ++n)
+        start = text.rfind('\n', start - 1);
+    return start == std::string::npos || start == text.size() ? text : text.substr(start + 1);
+}
+
+int not_graded_command(const std::string& reason, const std::string& log_file,
+                       const std::string& out_dir) {
+    const std::string log = log_file.empty() ? "" : log_tail(log_file, 200);
+    // The checks, named and scored as `course grade` names them, judged on the
+    // outputs of a child that never ran: an empty work directory.
+    WorkDir empty(nullptr);
+    ChildRun none;
+    none.status = reason;
+    const ChildOutputs outputs(empty.path(), none, ChildLimits{});
+    GradeRun run;
+    for (const LabData& lab : discover_labs(source_root())) {
+        validate_checks(lab);
+        LabResult result;
+        result.lab = lab.id;
+        result.status = reason;
+        result.checks = judge_lab(lab, plan_lab(lab, 0, PlanFor::Grading), outputs, out_dir);
+        for (CheckResult& check : result.checks) check.output.clear();  // the status says why
+        run.labs.push_back(std::move(result));
+    }
+    write_reports(run, out_dir);
+
+    // results.json's overall output: the reason once and the log, rather than
+    // the reason once per lab.
+    const std::string path = report::in_dir(out_dir, "results.json");
+    nlohmann::ordered_json results = nlohmann::ordered_json::parse(read_file(path));
+    results["output"] =
+        report::clean_text("0/" + report::points(run.max_score()) + " points: " + reason +
+                           (log.empty() ? "" : "\n\n" + log) + "\n");
+    report::write_text_file(path, results.dump(2) + "\n");
+    std::printf("%s", summary_table(run).c_str());
+    return 1;
+}
+
+}  // namespace grading

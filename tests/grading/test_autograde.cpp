@@ -1,0 +1,151 @@
+// `course autograde` where it cannot grade, through run_autograder (the
+// shim), on a small fake /autograder that builds nothing of the repository:
+// its `lab` target is a shell script. The reason is shown, and results.json
+// is complete, valid JSON whatever the log holds (quotes, backslashes,
+// control characters, bytes that are not UTF-8). And the shim's own
+// results.json when course cannot run at all.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "framework/text.hpp"
+#include "tests/grading/grade_support.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using fw::shell_quote;
+using fw::test::read_text;
+using fw::test::write_text;
+using nlohmann::json;
+
+// A compiler's message with everything JSON must escape or drop.
+const char* const kHostileLog =
+    R"(printf 'pipeline.cpp:3:5: error: "quoted" \\back\\slash\ttab \001\002 \033[31mred\033[0m )"
+    R"(\377 end of log\n'
+exit 1
+)";
+
+// A `lab` target that builds: bin/lab, a program that does nothing.
+const char* const kBuilds = R"(mkdir -p bin && printf '#!/bin/sh\nexit 0\n' >bin/lab
+chmod +x bin/lab
+)";
+
+// The fake /autograder: source/ holds lab 0's data file and references, one
+// student file (solution and student version), course (a link to this
+// build's) and a configured build whose `lab` target runs `lab_script` in the
+// build folder; the submission holds that file, uploaded flat.
+fs::path make_root(const std::string& name, const std::string& lab_script) {
+    const fs::path root = fs::path(fw::test::out_dir()) / name, source = root / "source";
+    fs::remove_all(root);
+    grade_test::make_tree(source.string(), false);
+    write_text(source / "student_files.txt", "labs/00_pipeline/pipeline.cpp\n");
+    write_text(source / "labs/00_pipeline/pipeline.cpp", "// the solution\n");
+    write_text(source / "student_versions/labs/00_pipeline/pipeline.cpp", "// student version\n");
+    write_text(root / "project/CMakeLists.txt",
+               "cmake_minimum_required(VERSION 3.16)\nproject(fake NONE)\n"
+               "add_custom_target(lab COMMAND sh ${CMAKE_SOURCE_DIR}/lab.sh)\n");
+    write_text(root / "project/lab.sh", lab_script);
+    const auto r = fw::test::run_command("cmake -S " + shell_quote((root / "project").string()) +
+                                         " -B " + shell_quote((source / "build").string()));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    fs::create_directories(source / "course-bin");
+    fs::create_symlink(grade_test::course(), source / "course-bin" / "course");
+    write_text(root / "submission/pipeline.cpp", "// submitted\n");
+    return root;
+}
+
+struct Outcome {
+    int exit_code = -1;
+    std::string output;  // run_autograder's
+    json results;        // results/results.json; discarded (not an object) when not JSON
+};
+
+Outcome run_autograder(const fs::path& root, const std::string& env = "") {
+    const std::string shim = fw::test::source_dir() + "/grading/gradescope/run_autograder";
+    const auto r = fw::test::run_command(
+        "env -u LAB_ROOT -u LAB_SHADER_DIR AUTOGRADER_ROOT=" + shell_quote(root.string()) +
+        " AUTOGRADER_USER=no-such-user-of-the-autograde-test " + env + " bash " +
+        shell_quote(shim));
+    MESSAGE("run_autograder: exit " << r.exit_code << "\n" << r.output);
+    Outcome o{r.exit_code, r.output, json()};
+    o.results = json::parse(read_text((root / "results/results.json").string()), nullptr, false);
+    return o;
+}
+
+// Exit 0, and results.json lists every check of lab 0, failed, with `reason`
+// in its output.
+void check_not_graded(const Outcome& o, const std::string& reason) {
+    CHECK(o.exit_code == 0);
+    REQUIRE_MESSAGE(o.results.is_object(), "results.json is missing or not JSON");
+    CHECK(o.results.value("score", -1.0) == 0.0);
+    CHECK(o.results.value("max_score", -1.0) ==
+          doctest::Approx(grade_test::points(grade_test::lab0_checks())));
+    CHECK(o.results["tests"].size() == grade_test::lab0_checks().size());
+    for (const json& t : o.results["tests"]) CHECK(t["status"] == "failed");
+    fw::test::check_mentions(o.results.value("output", ""), {reason});
+}
+
+// The log's text is in `output`, without its control characters.
+void check_log_kept(const std::string& output) {
+    fw::test::check_mentions(output, {"\"quoted\"", "\\back\\slash", "red", "end of log"});
+    CHECK(output.find('\x01') == std::string::npos);
+    CHECK(output.find('\x1b') == std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("autograde: a submission that does not build: the reason and the log, as valid JSON") {
+    const fs::path root = make_root("no-build", kHostileLog);
+    const Outcome o = run_autograder(root);
+    check_not_graded(o, "the submission does not build");
+    check_log_kept(o.results.value("output", ""));
+    fw::test::check_mentions(o.output, {"submitted as pipeline.cpp"});
+    CHECK(read_text((root / "source/labs/00_pipeline/pipeline.cpp").string()) == "// submitted\n");
+}
+
+TEST_CASE("autograde: course grade failing is reported with its exit status and message") {
+    const fs::path root = make_root("grade-fails", kBuilds);
+    const Outcome o = run_autograder(root, "COURSE_TIMEOUT=0");
+    check_not_graded(o, "course grade failed (exit status 2)");
+    fw::test::check_mentions(o.results.value("output", ""), {"--timeout"});
+}
+
+TEST_CASE("autograde: a submitted file that cannot be put in place is reported") {
+    const fs::path root = make_root("no-copy", kBuilds);
+    fs::remove(root / "source/labs/00_pipeline/pipeline.cpp");
+    fs::create_directories(root / "source/labs/00_pipeline/pipeline.cpp");
+    check_not_graded(run_autograder(root), "the autograder could not copy");
+}
+
+TEST_CASE("autograde: a folder without its list of student files is reported") {
+    const fs::path root = make_root("no-list", kBuilds);
+    fs::remove(root / "source/student_files.txt");
+    const Outcome o = run_autograder(root);
+    check_not_graded(o, "the autograder failed");
+    fw::test::check_mentions(o.results.value("output", ""), {"student_files.txt"});
+}
+
+TEST_CASE("autograde: when even the failed reports cannot be made, results.json still says why") {
+    const fs::path root = make_root("no-reports", kHostileLog);
+    write_text(root / "source/labs/00_pipeline/checkpoints.json", "{\"checkpoints\": [ broken");
+    const Outcome o = run_autograder(root);
+    CHECK(o.exit_code == 0);
+    REQUIRE_MESSAGE(o.results.is_object(), "results.json is missing or not JSON");
+    CHECK(o.results.value("score", -1.0) == 0.0);
+    const std::string output = o.results.value("output", "");
+    fw::test::check_mentions(output, {"the submission does not build", "checkpoints.json"});
+    check_log_kept(output);
+}
+
+TEST_CASE("autograde: run_autograder writes a results.json of its own when course cannot run") {
+    const fs::path root = fs::path(fw::test::out_dir()) / "no-course";
+    fs::remove_all(root);
+    fs::create_directories(root / "source");
+    const Outcome o = run_autograder(root);
+    CHECK(o.exit_code == 0);
+    REQUIRE_MESSAGE(o.results.is_object(), "results.json is missing or not JSON");
+    CHECK(o.results.value("score", -1.0) == 0.0);
+    fw::test::check_mentions(o.results.value("output", ""), {"could not run"});
+}
