@@ -30,7 +30,8 @@ std::string lab_of_checkpoint_file(const std::string& path, const nlohmann::json
     try {
         parse_lab_dir(folder, number, id);
     } catch (const Error&) {
-        if (named.empty()) fail("the file is not in a lab folder (labs/NN_name/) and has no \"lab\"");
+        if (named.empty())
+            fail("the file is not in a lab folder (labs/NN_name/) and has no \"lab\"");
         return named;
     }
     if (!named.empty() && named != id)
@@ -65,9 +66,9 @@ CheckpointFile read_checkpoint_file(const std::string& path) {
         std::string where = "checkpoint '" + cp.name + "': ";
         if (!names.insert(cp.name).second) fail(where + "the name is used twice");
         // Names become file names (NAME.png) in renders and reports.
-        if (cp.name.empty() || cp.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
-                                                         "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
-                                   std::string::npos)
+        if (cp.name.empty() || cp.name.find_first_not_of(
+                                   "abcdefghijklmnopqrstuvwxyz"
+                                   "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos)
             fail(where + "names may use only letters, digits, '_' and '-'");
         for (const auto& [key, value] : item.items())
             if (key != "name" && key != "visibility" && key != "description" && key != "params" &&
@@ -76,7 +77,8 @@ CheckpointFile read_checkpoint_file(const std::string& path) {
                      "\"; fields are name, visibility, description, params, checks");
         cp.visibility = item.value("visibility", std::string("visible"));
         if (cp.visibility != "visible" && cp.visibility != "hidden")
-            fail(where + "visibility must be \"visible\" or \"hidden\", not \"" + cp.visibility + "\"");
+            fail(where + "visibility must be \"visible\" or \"hidden\", not \"" + cp.visibility +
+                 "\"");
         cp.description = item.value("description", std::string());
         if (item.contains("params")) {
             if (!item["params"].is_object()) fail(where + "\"params\" must be an object");
@@ -111,8 +113,8 @@ const Checkpoint& find_checkpoint(const std::vector<Checkpoint>& all, const std:
     for (const Checkpoint& cp : all)
         if (cp.name == name) return cp;
     const std::string names = join(all, ", ", &Checkpoint::name);
-    throw UsageError("lab '" + lab_id + "' has no checkpoint '" + name + "'; its checkpoints are: " +
-                     (names.empty() ? "(none)" : names));
+    throw UsageError("lab '" + lab_id + "' has no checkpoint '" + name +
+                     "'; its checkpoints are: " + (names.empty() ? "(none)" : names));
 }
 
 ParamValues checkpoint_params(const RegisteredLab& lab, const Checkpoint& cp) {

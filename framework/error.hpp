@@ -1,6 +1,7 @@
 // Errors the framework throws. Every message names the thing at fault and
-// what would fix it (SPEC.md, Errors). `lab` and `course` print the message
-// and exit with the code the type implies; nothing is swallowed.
+// what would fix it (docs/contract.md, Exit status and errors). `lab` and
+// `course` print the message and exit with the code the type implies;
+// nothing is swallowed.
 #pragma once
 
 #include <stdexcept>

@@ -34,8 +34,8 @@ std::string read_file(const std::string& path, const char* kind) {
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw Error("cannot read " + std::string(kind) + " '" + path + "': " +
-                    (errno ? std::strerror(errno) : "cannot open it"));
+        throw Error("cannot read " + std::string(kind) + " '" + path +
+                    "': " + (errno ? std::strerror(errno) : "cannot open it"));
     std::ostringstream ss;
     ss << in.rdbuf();
     return ss.str();
@@ -67,9 +67,9 @@ DepthImage::DepthImage(int w, int h, float fill) : width(w), height(h) {
 void write_png(const std::string& path, const Image& img) {
     if (img.width <= 0 || img.height <= 0 ||
         img.pixels.size() != static_cast<size_t>(img.width) * img.height)
-        throw Error("cannot write PNG '" + path + "': image is " + std::to_string(img.width) +
-                    "x" + std::to_string(img.height) + " with " +
-                    std::to_string(img.pixels.size()) + " pixels");
+        throw Error("cannot write PNG '" + path + "': image is " + std::to_string(img.width) + "x" +
+                    std::to_string(img.height) + " with " + std::to_string(img.pixels.size()) +
+                    " pixels");
     static_assert(sizeof(Rgba8) == 4, "Rgba8 must be 4 tightly packed bytes");
     std::vector<Rgba8> top_first = flip_rows(img.pixels, img.width, img.height);
     if (!stbi_write_png(path.c_str(), img.width, img.height, 4, top_first.data(), img.width * 4))
@@ -103,8 +103,7 @@ Image decode_png(const std::string& bytes, const std::string& name) {
     // Asking for 4 components converts grey, grey+alpha and RGB to RGBA8.
     stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                           static_cast<int>(bytes.size()), &w, &h, &channels, 4);
-    if (!data)
-        throw Error("cannot read PNG '" + name + "': " + stbi_failure_reason());
+    if (!data) throw Error("cannot read PNG '" + name + "': " + stbi_failure_reason());
     Image img(w, h);
     std::memcpy(img.pixels.data(), data, img.pixels.size() * 4);
     stbi_image_free(data);
@@ -130,7 +129,9 @@ void write_pfm(const std::string& path, const DepthImage& img) {
 
 DepthImage read_pfm(const std::string& path) {
     std::string bytes = read_file(path, "PFM");
-    auto fail = [&](const std::string& why) { return Error("cannot read PFM '" + path + "': " + why); };
+    auto fail = [&](const std::string& why) {
+        return Error("cannot read PFM '" + path + "': " + why);
+    };
     if (bytes.compare(0, 2, "PF") == 0)
         throw fail("it is a colour (PF) file; only single-channel depth (Pf) is supported");
     if (bytes.compare(0, 2, "Pf") != 0) throw fail("not a PFM file (no 'Pf' header)");
@@ -176,8 +177,8 @@ DepthImage read_pfm(const std::string& path) {
 namespace {
 
 int channel_error(Rgba8 a, Rgba8 b) {
-    return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b),
-                     std::abs(a.a - b.a)});
+    return std::max(
+        {std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
 }
 
 // Failed pixels: dim red just over the tolerance, brightening to yellow at 255.
@@ -190,7 +191,8 @@ Rgba8 heat(int error, int tolerance) {
 
 }  // namespace
 
-CompareResult compare_images(const Image& actual, const Image& expected, const CompareOptions& opt) {
+CompareResult compare_images(const Image& actual, const Image& expected,
+                             const CompareOptions& opt) {
     CompareResult res;
     res.options = opt;
     res.actual_width = actual.width;
@@ -209,7 +211,8 @@ CompareResult compare_images(const Image& actual, const Image& expected, const C
             const Rgba8 a = actual.at(x, y);
             int best = channel_error(a, expected.at(x, y));
             // Only pixels that differ in place need the neighbourhood search.
-            for (int ny = std::max(0, y - r); best > opt.tolerance && ny <= std::min(h - 1, y + r); ++ny)
+            for (int ny = std::max(0, y - r); best > opt.tolerance && ny <= std::min(h - 1, y + r);
+                 ++ny)
                 for (int nx = std::max(0, x - r); nx <= std::min(w - 1, x + r); ++nx)
                     best = std::min(best, channel_error(a, expected.at(nx, ny)));
             res.max_channel_error = std::max(res.max_channel_error, best);
@@ -232,9 +235,8 @@ CompareResult compare_images(const Image& actual, const Image& expected, const C
 std::string CompareResult::summary() const {
     char line[320];
     if (size_mismatch) {
-        std::snprintf(line, sizeof line,
-                      "size mismatch: actual image is %dx%d, expected %dx%d", actual_width,
-                      actual_height, expected_width, expected_height);
+        std::snprintf(line, sizeof line, "size mismatch: actual image is %dx%d, expected %dx%d",
+                      actual_width, actual_height, expected_width, expected_height);
         return line;
     }
     const int n = 2 * std::max(0, options.radius) + 1;

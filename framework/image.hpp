@@ -1,5 +1,5 @@
 // Images read back from GL and written to disk: RGBA8 colour (PNG) and float
-// depth (PFM), plus the fuzzy comparison that SPEC.md's `image` check uses.
+// depth (PFM), plus the fuzzy comparison of the `image` check (docs/contract.md, Checks).
 //
 // Storage follows GL: row 0 is the BOTTOM row (window y = 0), so pixel
 // (x, y) of an Image is the pixel at GL window coordinates (x + 0.5, y + 0.5).
@@ -55,7 +55,7 @@ bool png_header_size(const std::string& bytes, int& width, int& height);
 void write_pfm(const std::string& path, const DepthImage& img);
 DepthImage read_pfm(const std::string& path);
 
-// SPEC.md, Checks, `image`: a pixel of `actual` passes when some pixel of
+// docs/contract.md, Checks, `image`: a pixel of `actual` passes when some pixel of
 // `expected` in its (2r+1)x(2r+1) neighbourhood (r = `radius`, default 1: 3x3)
 // is within `tolerance` (0-255) on every channel (RGBA). The image passes when
 // failed_fraction <= max_failed_fraction.
@@ -71,13 +71,15 @@ struct CompareResult {
     long failed_pixels = 0;
     long total_pixels = 0;
     double failed_fraction = 0.0;
-    int max_channel_error = 0;   // over all pixels, to the nearest neighbour match
-    Image difference;            // failed pixels dim red -> yellow by error; passing ones dark grey
-    CompareOptions options;      // the thresholds used, for summary()
+    int max_channel_error = 0;  // over all pixels, to the nearest neighbour match
+    Image difference;           // failed pixels dim red -> yellow by error; passing ones dark grey
+    CompareOptions options;     // the thresholds used, for summary()
     int actual_width = 0, actual_height = 0, expected_width = 0, expected_height = 0;
-    std::string summary() const; // one line: "12 of 262144 pixels (0.0046%) differ by more than 8/255; limit 0.1%"
+    std::string summary()
+        const;  // one line: "12 of 262144 pixels (0.0046%) differ by more than 8/255; limit 0.1%"
 };
 
-CompareResult compare_images(const Image& actual, const Image& expected, const CompareOptions& opt = {});
+CompareResult compare_images(const Image& actual, const Image& expected,
+                             const CompareOptions& opt = {});
 
 }  // namespace fw

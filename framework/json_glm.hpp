@@ -3,9 +3,8 @@
 // The `lab` child and `course` both read and write values this way.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "framework/error.hpp"
@@ -53,7 +52,8 @@ struct JsonValue<glm::vec<N, float>> {
         if (!j.is_array() || j.size() != static_cast<size_t>(N))
             throw Error("expected an array of " + std::to_string(N) + " numbers, got " + j.dump());
         glm::vec<N, float> v;
-        for (glm::length_t i = 0; i < N; ++i) v[i] = JsonValue<float>::from(j[static_cast<size_t>(i)]);
+        for (glm::length_t i = 0; i < N; ++i)
+            v[i] = JsonValue<float>::from(j[static_cast<size_t>(i)]);
         return v;
     }
 };
@@ -62,7 +62,8 @@ template <glm::length_t C, glm::length_t R>
 struct JsonValue<glm::mat<C, R, float>> {
     static nlohmann::json to(const glm::mat<C, R, float>& m) {
         nlohmann::json out = nlohmann::json::array();
-        for (glm::length_t c = 0; c < C; ++c) out.push_back(JsonValue<glm::vec<R, float>>::to(m[c]));
+        for (glm::length_t c = 0; c < C; ++c)
+            out.push_back(JsonValue<glm::vec<R, float>>::to(m[c]));
         return out;
     }
     static glm::mat<C, R, float> from(const nlohmann::json& j) {

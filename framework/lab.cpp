@@ -5,8 +5,8 @@
 #include <set>
 
 #include "framework/error.hpp"
-#include "framework/text.hpp"
 #include "framework/gl/program.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
@@ -16,9 +16,8 @@ ProgramLibrary::~ProgramLibrary() = default;
 Program& ProgramLibrary::load(const std::vector<std::string>& files) {
     std::vector<std::string> paths;
     for (const std::string& file : files)
-        paths.push_back(folder_.empty() || file.find('/') != std::string::npos
-                            ? file
-                            : folder_ + "/" + file);
+        paths.push_back(
+            folder_.empty() || file.find('/') != std::string::npos ? file : folder_ + "/" + file);
     programs_.push_back(std::make_unique<Program>(Program::from_files(paths)));
     return *programs_.back();
 }
@@ -69,8 +68,9 @@ bool register_lab(std::string_view dir, LabInfo info, LabFactory factory) {
             throw Error("lab folder '" + info.dir + "': lab " + other.info.dir +
                         " has the same number or id; each lab needs its own");
     labs.push_back({std::move(info), std::move(factory)});
-    std::sort(labs.begin(), labs.end(),
-              [](const RegisteredLab& a, const RegisteredLab& b) { return a.info.number < b.info.number; });
+    std::sort(labs.begin(), labs.end(), [](const RegisteredLab& a, const RegisteredLab& b) {
+        return a.info.number < b.info.number;
+    });
     return true;
 }
 
@@ -79,9 +79,8 @@ const std::vector<RegisteredLab>& registered_labs() { return registry(); }
 const RegisteredLab& find_lab(std::string_view id) {
     for (const RegisteredLab& lab : registry())
         if (lab.info.id == id) return lab;
-    const std::string names = join(registry(), ", ", [](const RegisteredLab& lab) {
-        return lab.info.id;
-    });
+    const std::string names =
+        join(registry(), ", ", [](const RegisteredLab& lab) { return lab.info.id; });
     throw UsageError("unknown lab '" + std::string(id) +
                      "'; the labs are: " + (names.empty() ? "(none)" : names));
 }

@@ -12,10 +12,9 @@
 // and the framebuffer; a lab only creates its GL objects and draws a frame.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,7 +36,7 @@ struct LabInfo {
     std::string dir;
     std::string title;
     std::vector<Param> params;
-    std::vector<std::string> controls;  // extra window controls, e.g. "drag: orbit the eye"
+    std::vector<std::string> controls;    // extra window controls, e.g. "drag: orbit the eye"
     std::vector<UnitFunction> functions;  // student functions the grader evaluates (units.hpp)
 };
 
@@ -133,11 +132,11 @@ std::string lab_path(const LabInfo& info, const std::string& file);
 
 // Registers `Class`, which must have `static fw::LabInfo info();`, as the lab
 // of the folder this file is in.
-#define FW_LAB(Class)                                                        \
-    namespace {                                                              \
-    static_assert(sizeof(FW_LAB_DIR) > 1,                                    \
-                  "FW_LAB is only for files in labs/NN_name/: the build "    \
-                  "passes their folder's name as FW_LAB_DIR");               \
-    const bool fw_lab_registered_##Class = ::fw::register_lab(               \
-        FW_LAB_DIR, Class::info(), [] { return std::make_unique<Class>(); }); \
+#define FW_LAB(Class)                                                                            \
+    namespace {                                                                                  \
+    static_assert(sizeof(FW_LAB_DIR) > 1,                                                        \
+                  "FW_LAB is only for files in labs/NN_name/: the build "                        \
+                  "passes their folder's name as FW_LAB_DIR");                                   \
+    const bool fw_lab_registered_##Class =                                                       \
+        ::fw::register_lab(FW_LAB_DIR, Class::info(), [] { return std::make_unique<Class>(); }); \
     }

@@ -42,11 +42,16 @@ bool parse_double(const std::string& text, double& out) {
 
 const char* param_type_name(ParamType t) {
     switch (t) {
-        case ParamType::Float: return "float";
-        case ParamType::Int: return "int";
-        case ParamType::Bool: return "bool";
-        case ParamType::Enum: return "enum";
-        case ParamType::Color: return "color";
+        case ParamType::Float:
+            return "float";
+        case ParamType::Int:
+            return "int";
+        case ParamType::Bool:
+            return "bool";
+        case ParamType::Enum:
+            return "enum";
+        case ParamType::Color:
+            return "color";
     }
     return "?";
 }
@@ -121,10 +126,22 @@ Param& Param::range(double lo, double hi) {
     max = hi;
     return *this;
 }
-Param& Param::step(double s) { step_size = s; return *this; }
-Param& Param::unit(std::string u) { unit_text = std::move(u); return *this; }
-Param& Param::help(std::string h) { help_text = std::move(h); return *this; }
-Param& Param::key(int k) { shortcut = k; return *this; }
+Param& Param::step(double s) {
+    step_size = s;
+    return *this;
+}
+Param& Param::unit(std::string u) {
+    unit_text = std::move(u);
+    return *this;
+}
+Param& Param::help(std::string h) {
+    help_text = std::move(h);
+    return *this;
+}
+Param& Param::key(int k) {
+    shortcut = k;
+    return *this;
+}
 
 double Param::key_step() const {
     if (step_size > 0.0) return step_size;
@@ -135,10 +152,14 @@ double Param::key_step() const {
 std::string Param::default_text() const {
     switch (type) {
         case ParamType::Float:
-        case ParamType::Int: return format_number(default_number);
-        case ParamType::Bool: return default_flag ? "true" : "false";
-        case ParamType::Enum: return choices[static_cast<size_t>(default_choice)];
-        case ParamType::Color: return hex_color(default_color);
+        case ParamType::Int:
+            return format_number(default_number);
+        case ParamType::Bool:
+            return default_flag ? "true" : "false";
+        case ParamType::Enum:
+            return choices[static_cast<size_t>(default_choice)];
+        case ParamType::Color:
+            return hex_color(default_color);
     }
     return {};
 }
@@ -151,9 +172,12 @@ std::string Param::range_text() const {
             if (type == ParamType::Int) r += " integer";
             return unit_text.empty() ? r : r + " " + unit_text;
         }
-        case ParamType::Bool: return "true|false";
-        case ParamType::Enum: return "{" + join(choices, ", ") + "}";
-        case ParamType::Color: return "hex rrggbb";
+        case ParamType::Bool:
+            return "true|false";
+        case ParamType::Enum:
+            return "{" + join(choices, ", ") + "}";
+        case ParamType::Color:
+            return "hex rrggbb";
     }
     return {};
 }
@@ -174,7 +198,9 @@ bool parse_hex_color(const std::string& text, glm::vec3& out) {
 
 std::string hex_color(glm::vec3 c) {
     char buf[8];
-    auto byte = [](float f) { return static_cast<int>(std::lround(glm::clamp(f, 0.0f, 1.0f) * 255.0f)); };
+    auto byte = [](float f) {
+        return static_cast<int>(std::lround(glm::clamp(f, 0.0f, 1.0f) * 255.0f));
+    };
     std::snprintf(buf, sizeof buf, "%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
     return buf;
 }
@@ -218,18 +244,24 @@ void ParamValues::set(const std::string& name, const std::string& text) {
         case ParamType::Int: {
             double d = 0.0;
             if (!parse_double(text, d))
-                throw UsageError(where + ": '" + text + "' is not a number; expected " + p.range_text());
+                throw UsageError(where + ": '" + text + "' is not a number; expected " +
+                                 p.range_text());
             if (p.type == ParamType::Int && d != std::floor(d))
-                throw UsageError(where + ": '" + text + "' is not an integer; expected " + p.range_text());
+                throw UsageError(where + ": '" + text + "' is not an integer; expected " +
+                                 p.range_text());
             if (d < p.min || d > p.max)
-                throw UsageError(where + ": " + text + " is out of range; expected " + p.range_text());
+                throw UsageError(where + ": " + text + " is out of range; expected " +
+                                 p.range_text());
             v.number = d;
             return;
         }
         case ParamType::Bool: {
-            if (text == "true" || text == "1" || text == "on" || text == "yes") v.flag = true;
-            else if (text == "false" || text == "0" || text == "off" || text == "no") v.flag = false;
-            else throw UsageError(where + ": '" + text + "' is not a bool; expected true or false");
+            if (text == "true" || text == "1" || text == "on" || text == "yes")
+                v.flag = true;
+            else if (text == "false" || text == "0" || text == "off" || text == "no")
+                v.flag = false;
+            else
+                throw UsageError(where + ": '" + text + "' is not a bool; expected true or false");
             return;
         }
         case ParamType::Enum: {
@@ -238,11 +270,13 @@ void ParamValues::set(const std::string& name, const std::string& text) {
                     v.choice = static_cast<int>(c);
                     return;
                 }
-            throw UsageError(where + ": unknown value '" + text + "'; valid values: " + join(p.choices, ", "));
+            throw UsageError(where + ": unknown value '" + text +
+                             "'; valid values: " + join(p.choices, ", "));
         }
         case ParamType::Color:
             if (!parse_hex_color(text, v.color))
-                throw UsageError(where + ": '" + text + "' is not a colour; expected hex rrggbb, e.g. ff8000");
+                throw UsageError(where + ": '" + text +
+                                 "' is not a colour; expected hex rrggbb, e.g. ff8000");
             return;
     }
 }
@@ -291,10 +325,18 @@ double ParamValues::set_clamped(const std::string& name, double value) {
 glm::vec3 ParamValues::color(const std::string& name) const {
     return values_[index_of(name, ParamType::Color)].color;
 }
-double& ParamValues::number_ref(const std::string& name) { return values_[index_of(name, ParamType::Float)].number; }
-bool& ParamValues::flag_ref(const std::string& name) { return values_[index_of(name, ParamType::Bool)].flag; }
-int& ParamValues::choice_ref(const std::string& name) { return values_[index_of(name, ParamType::Enum)].choice; }
-glm::vec3& ParamValues::color_ref(const std::string& name) { return values_[index_of(name, ParamType::Color)].color; }
+double& ParamValues::number_ref(const std::string& name) {
+    return values_[index_of(name, ParamType::Float)].number;
+}
+bool& ParamValues::flag_ref(const std::string& name) {
+    return values_[index_of(name, ParamType::Bool)].flag;
+}
+int& ParamValues::choice_ref(const std::string& name) {
+    return values_[index_of(name, ParamType::Enum)].choice;
+}
+glm::vec3& ParamValues::color_ref(const std::string& name) {
+    return values_[index_of(name, ParamType::Color)].color;
+}
 
 std::string ParamValues::text(const std::string& name) const {
     size_t i = index_of(name);
@@ -302,10 +344,14 @@ std::string ParamValues::text(const std::string& name) const {
     const Value& v = values_[i];
     switch (p.type) {
         case ParamType::Float:
-        case ParamType::Int: return format_number(v.number);
-        case ParamType::Bool: return v.flag ? "true" : "false";
-        case ParamType::Enum: return p.choices[static_cast<size_t>(v.choice)];
-        case ParamType::Color: return hex_color(v.color);
+        case ParamType::Int:
+            return format_number(v.number);
+        case ParamType::Bool:
+            return v.flag ? "true" : "false";
+        case ParamType::Enum:
+            return p.choices[static_cast<size_t>(v.choice)];
+        case ParamType::Color:
+            return hex_color(v.color);
     }
     return {};
 }
@@ -316,11 +362,21 @@ nlohmann::json ParamValues::to_json() const {
         const Param& p = (*params_)[i];
         const Value& v = values_[i];
         switch (p.type) {
-            case ParamType::Float: out[p.name] = v.number; break;
-            case ParamType::Int: out[p.name] = static_cast<long>(v.number); break;
-            case ParamType::Bool: out[p.name] = v.flag; break;
-            case ParamType::Enum: out[p.name] = p.choices[static_cast<size_t>(v.choice)]; break;
-            case ParamType::Color: out[p.name] = hex_color(v.color); break;
+            case ParamType::Float:
+                out[p.name] = v.number;
+                break;
+            case ParamType::Int:
+                out[p.name] = static_cast<long>(v.number);
+                break;
+            case ParamType::Bool:
+                out[p.name] = v.flag;
+                break;
+            case ParamType::Enum:
+                out[p.name] = p.choices[static_cast<size_t>(v.choice)];
+                break;
+            case ParamType::Color:
+                out[p.name] = hex_color(v.color);
+                break;
         }
     }
     return out;

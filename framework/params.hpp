@@ -16,11 +16,10 @@
 // default is not among its choices throws when the lab is registered.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <array>
 #include <glm/glm.hpp>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <typeindex>
 #include <typeinfo>
@@ -45,9 +44,9 @@ struct Param {
     std::string help_text;
     std::string unit_text;
     double default_number = 0.0, min = 0.0, max = 1.0, step_size = 0.0;  // Float, Int
-    bool default_flag = false;                                          // Bool
-    std::vector<std::string> choices;                                   // Enum: names
-    std::vector<long long> choice_values;  // Enum: the C++ enum value of each name
+    bool default_flag = false;                                           // Bool
+    std::vector<std::string> choices;                                    // Enum: names
+    std::vector<long long> choice_values;        // Enum: the C++ enum value of each name
     std::type_index choice_enum = typeid(void);  // Enum: the enum type it is bound to
     int default_choice = 0;
     glm::vec3 default_color{0.0f};  // Color
@@ -55,7 +54,7 @@ struct Param {
     // Enum cycles, numbers step up (with Shift, down). 0 = none.
     int shortcut = 0;
 
-    static Param number(std::string name, double def);                   // float
+    static Param number(std::string name, double def);  // float
     static Param integer(std::string name, int def);
     static Param boolean(std::string name, bool def);
     // A choice bound to the enum E; `options` in the order the panel lists them.
@@ -81,7 +80,8 @@ struct Param {
 
     double key_step() const;
     std::string default_text() const;  // as --set would take it
-    std::string range_text() const;    // "[10, 150] deg", "{order, indexed}", "true|false", "hex rrggbb"
+    std::string range_text()
+        const;  // "[10, 150] deg", "{order, indexed}", "true|false", "hex rrggbb"
 
 private:
     template <class E>
@@ -136,7 +136,7 @@ public:
     glm::vec3& color_ref(const std::string& name);
 
     std::string text(const std::string& name) const;  // as --set would take it
-    nlohmann::json to_json() const;                    // every resolved value
+    nlohmann::json to_json() const;                   // every resolved value
     const std::vector<Param>& params() const { return *params_; }
     const std::string& lab() const { return lab_; }
 

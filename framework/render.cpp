@@ -80,7 +80,8 @@ void parse_size(const std::string& text, int& width, int& height) {
     long h = std::strtol(hs.c_str(), &end, 10);
     if (hs.empty() || *end) bad("height '" + hs + "' is not a whole number");
     if (w <= 0 || h <= 0) bad("width and height must be at least 1");
-    if (w > 65536 || h > 65536) bad("width and height must be at most the GL limit (65536 here at most)");
+    if (w > 65536 || h > 65536)
+        bad("width and height must be at most the GL limit (65536 here at most)");
     width = static_cast<int>(w);
     height = static_cast<int>(h);
 }

@@ -3,9 +3,8 @@
 // `lab render`, the tests and the grading child all draw through this.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "framework/context.hpp"
@@ -20,7 +19,7 @@ class Query;
 struct RenderOutput {
     Image color;
     DepthImage depth;
-    nlohmann::json stats;  // SPEC.md --stats fields, plus "lab_stats"
+    nlohmann::json stats;  // the --stats fields (docs/contract.md, `--stats FILE.json`)
 };
 
 class LabRenderer {

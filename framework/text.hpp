@@ -8,16 +8,6 @@
 
 namespace fw {
 
-namespace detail {
-// std::identity, which C++17 lacks.
-struct Identity {
-    template <class T>
-    const T& operator()(const T& value) const {
-        return value;
-    }
-};
-}  // namespace detail
-
 // The items of `items` with `sep` between them, each passed through `proj`
 // first (a member pointer or a function returning text; by default the item
 // itself):
@@ -25,7 +15,7 @@ struct Identity {
 //   join(std::vector<std::string>{"a", "b"}, ", ")   // "a, b"
 //   join(labs, ", ", &LabData::id)                    // "00_pipeline, 01_transforms"
 //   join(errors, ", ", gl_enum_name)                  // "GL_INVALID_ENUM, ..."
-template <class Range, class Proj = detail::Identity>
+template <class Range, class Proj = std::identity>
 std::string join(const Range& items, std::string_view sep, Proj proj = {}) {
     std::string out;
     bool first = true;

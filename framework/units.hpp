@@ -14,9 +14,8 @@
 // matN and std::vector of those as results.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <tuple>
 #include <type_traits>

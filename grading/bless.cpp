@@ -4,10 +4,9 @@
 // bless, look at them, commit them. The backend follows the same rule as
 // `course grade` (--backend, else $LAB_BACKEND, else auto: EGL, then OSMesa);
 // the two backends render every checkpoint alike (tests/tools/test_backends).
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "framework/error.hpp"
 #include "grading/checks.hpp"

@@ -1,4 +1,4 @@
-// Checks (SPEC.md, Checks): read from each lab's data file, validated before
+// Checks (docs/contract.md, Checks): read from each lab's data file, validated before
 // any child runs, turned into the job a `lab grade-child` carries out, and
 // judged from its raw outputs by course alone.
 //

@@ -65,9 +65,7 @@ void switch_user(const RunAsUser& user) {
 }
 
 void set_limit(int resource, rlim_t value, const char* name) {
-    struct rlimit r {
-        value, value
-    };
+    rlimit r{value, value};
     if (setrlimit(resource, &r) != 0) child_fail(name);
 }
 
@@ -258,9 +256,7 @@ public:
     // the drain time by something it left behind).
     void watch() {
         while (!(exited_ && (eof_ || elapsed() > drain_until_))) {
-            struct pollfd p {
-                out_, POLLIN, 0
-            };
+            pollfd p{out_, POLLIN, 0};
             poll(&p, eof_ ? 0 : 1, 50);  // after EOF: just wait
             read_output();
             if (!exited_ && waitpid(pid_, &wait_status_, WNOHANG) == pid_) {

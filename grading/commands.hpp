@@ -1,4 +1,4 @@
-// The `course` subcommands (SPEC.md, `course`). Each returns the process exit
+// The `course` subcommands (docs/contract.md, `course`). Each returns the process exit
 // status: 0 success (for grade: every check passed), 1 a check failed,
 // 2 a usage or set-up error.
 #pragma once
@@ -16,11 +16,11 @@ struct GradeOptions {
     std::vector<std::string> labs;  // empty: every lab with a labs/NN_name/checkpoints.json
     std::string lab_binary;         // --lab PATH; default: `lab` beside `course`
     std::string out = "build/grade";
-    std::string backend;            // empty: $LAB_BACKEND or auto, decided by the child
+    std::string backend;  // empty: $LAB_BACKEND or auto, decided by the child
     int jobs = 1;
     double timeout_seconds = 60.0;
-    std::string run_as;             // --run-as USER (root only)
-    bool progress = true;           // a line per lab as it finishes
+    std::string run_as;    // --run-as USER (root only)
+    bool progress = true;  // a line per lab as it finishes
 };
 int grade_command(const GradeOptions& options);
 

@@ -1,4 +1,4 @@
-// `course grade` (SPEC.md, `course`): one `lab grade-child` per lab, judged
+// `course grade` (docs/contract.md, `course grade`): one `lab grade-child` per lab, judged
 // by course from the child's raw outputs, then the reports.
 #include <sys/stat.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// `course gradescope --out DIR` (SPEC.md, `course gradescope`): the folder
+// `course gradescope --out DIR` (docs/contract.md, `course gradescope`): the folder
 // a course uploads to Gradescope as its autograder. It holds
 // - the whole repository, solutions, hidden checkpoints and references
 //   included (what `course grade` needs), without build folders or .git;
@@ -77,7 +77,7 @@ FolderPlan plan_folder(const fs::path& source) {
     if (plan.students.empty())
         throw fw::Error("no file in '" + source.string() +
                         "' has a solution block, so a submission would have nothing to "
-                        "replace; mark the student parts (SPEC.md, `course release`)");
+                        "replace; mark the student parts (docs/conventions.md, Student parts)");
     return plan;
 }
 

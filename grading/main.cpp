@@ -1,8 +1,7 @@
-// `course`: the trusted grading and course tool (SPEC.md, `course`). It
+// `course`: the trusted grading and course tool (docs/contract.md, `course`). It
 // never links lab code: it runs the `lab` executable in child processes and
 // decides pass or fail from the data files and its own reference code.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <functional>
 #include <vector>

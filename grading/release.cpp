@@ -298,19 +298,19 @@ bool is_marked_source(const std::string& path) {
 
 std::vector<SolutionBlock> solution_blocks(const std::string& text, const std::string& path) {
     std::vector<SolutionBlock> blocks;
-    rewrite_blocks(
-        text, path, [](size_t) { return false; }, &blocks);
+    const auto keep_all = [](size_t) { return false; };
+    rewrite_blocks(text, path, keep_all, &blocks);
     return blocks;
 }
 
 std::string student_text(const std::string& text, const std::string& path) {
-    return rewrite_blocks(
-        text, path, [](size_t) { return true; }, nullptr);
+    const auto replace_all = [](size_t) { return true; };
+    return rewrite_blocks(text, path, replace_all, nullptr);
 }
 
 std::string student_text_of_block(const std::string& text, const std::string& path, size_t index) {
-    return rewrite_blocks(
-        text, path, [index](size_t i) { return i == index; }, nullptr);
+    const auto only_that_block = [index](size_t i) { return i == index; };
+    return rewrite_blocks(text, path, only_that_block, nullptr);
 }
 
 VisibleCheckpoints drop_hidden_checkpoints(const std::string& text, const std::string& path) {

@@ -1,4 +1,4 @@
-// `course release`: the student version of the repository (SPEC.md, `course
+// `course release`: the student version of the repository (docs/contract.md, `course
 // release`). The text transformations are pure functions of a file's text, so
 // they are tested without files; release_tree() applies them to a tree.
 //

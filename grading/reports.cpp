@@ -320,8 +320,8 @@ std::string summary_table(const GradeRun& run) {
             // repeats the check. Outputs without one start with the reason.
             const std::string output = report::check_output(lab, c);
             const size_t observed = output.find("Observed:");
-            const std::string why =
-                report::first_line(observed == std::string::npos ? output : output.substr(observed));
+            const std::string why = report::first_line(
+                observed == std::string::npos ? output : output.substr(observed));
             failed += "  " +
                       ascii(lab.lab + "/" + c.checkpoint + ": " + c.title +
                             (why.empty() ? "" : " - " + why)) +

@@ -1,4 +1,4 @@
-// The reports of a grading run (SPEC.md, `course grade`), all written into
+// The reports of a grading run (docs/contract.md, Reports), all written into
 // the output directory: summary.txt (the table also printed), results.json
 // (Gradescope's format), junit.xml, and a self-contained index.html.
 #pragma once

@@ -10,7 +10,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 # Build tools, GL (OSMesa, EGL + Mesa's drivers), window (GLFW, ImGui, Xvfb
-# for window tests), and header libraries. SPEC.md, Dependencies.
+# for window tests), and header libraries. docs/contract.md, Set-up.
 packages=(
   cmake g++ make pkg-config
   libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev

@@ -133,7 +133,7 @@ public:
         const char* exts = eglQueryString(display_, EGL_EXTENSIONS);
         check_can_make_context(exts, where, egl_major, egl_minor);
         const EGLConfig config = choose_config(exts, where);
-        // Core profile, and no forward-compatible flag (LABS.md conventions).
+        // Core profile, no forward-compatible flag (docs/labs.md, What every lab shares).
         // clang-format off
         const EGLint context_attribs[] = {
             EGL_CONTEXT_MAJOR_VERSION, 4,

@@ -38,7 +38,7 @@ public:
     }
 
     void set_up() {
-        // Core profile, no forward-compatible flag: OSMesa refuses it (LABS.md).
+        // Core profile, no forward-compatible flag: OSMesa refuses it (docs/labs.md).
         // clang-format off
         const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
                                OSMESA_DEPTH_BITS, 24,

@@ -21,7 +21,7 @@ void enable_debug_output();
 // pending glGetError code, the collected debug messages, and the labels of
 // the bound program, vertex array and draw framebuffer, e.g.
 //   GL error after draw in lab pipeline: GL_INVALID_OPERATION: <message>
-//   [program '00_pipeline/basic.vert + basic.frag', vertex array 'quads',
+//   [program '00_pipeline/pipeline.vert + pipeline.frag', vertex array 'quads',
 //    framebuffer 'offscreen 512x512']
 // `where` says what was just done ("draw in lab pipeline").
 void check_gl(const char* where);

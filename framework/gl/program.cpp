@@ -4,8 +4,8 @@
 #include <map>
 
 #include "framework/error.hpp"
-#include "framework/text.hpp"
 #include "framework/gl/debug.hpp"
+#include "framework/text.hpp"
 
 namespace fw {
 
@@ -16,7 +16,7 @@ std::string directory_of(const std::string& path) {
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
 }
 
-// "00_pipeline/basic.vert + basic.frag": a file in the same directory as the
+// "00_pipeline/pipeline.vert + pipeline.frag": a file in the same directory as the
 // one before it is shown by its name alone.
 std::string joined_names(const std::vector<std::string>& files) {
     std::string out;
@@ -106,7 +106,7 @@ Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
 
 void Program::use() const { glUseProgram(id()); }
 
-// The files as paths from the source tree ("shaders/00_pipeline/basic.vert"),
+// The files as paths from the source tree ("shaders/00_pipeline/pipeline.vert"),
 // which a student can open from the repository root.
 std::string Program::files_text() const {
     return join(sources_, ", ", [](const auto& source) { return source.first; });

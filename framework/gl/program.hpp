@@ -1,8 +1,8 @@
 // fw::Program: linked shader stages plus checked uniform setters.
 //
-//   auto prog = fw::Program::from_files({"00_pipeline/pipeline.vert", "00_pipeline/pipeline.frag"});
-//   prog.set("u_mvp", mvp);     // throws if pipeline.* has no active mat4 u_mvp
-//   prog.use();
+//   auto prog = fw::Program::from_files({"00_pipeline/pipeline.vert",
+//   "00_pipeline/pipeline.frag"}); prog.set("u_mvp", mvp);     // throws if pipeline.* has no
+//   active mat4 u_mvp prog.use();
 //
 // Uniforms are set with glProgramUniform*, so set() works whether or not the
 // program is in use. Each active uniform's location, type and array size is
@@ -44,7 +44,7 @@ public:
 
     // Compiles every file (relative to shader_dir() or absolute; stage from
     // the extension) and links them. `label` defaults to the file names
-    // joined: "00_pipeline/basic.vert + basic.frag".
+    // joined: "00_pipeline/pipeline.vert + pipeline.frag".
     static Program from_files(const std::vector<std::string>& files, std::string label = {});
     static Program from_shaders(std::vector<Shader> shaders, std::string label = {});
 

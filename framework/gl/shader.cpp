@@ -161,8 +161,8 @@ std::string expand_includes(const std::string& text, const std::string& path,
         }
         const std::string where = display_path(path) + ":" + std::to_string(number) + ": ";
         if (!std::regex_search(line, m, include))
-            throw Error(where + "expected #include \"name\" naming a file in the same folder: " +
-                        line);
+            throw Error(where +
+                        "expected #include \"name\" naming a file in the same folder: " + line);
         const std::string file = (folder / m[1].str()).string();
         std::ifstream in(file, std::ios::binary);
         std::ostringstream content;

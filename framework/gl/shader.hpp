@@ -54,8 +54,8 @@ int log_line_number(const std::string& log_line, int* source_string = nullptr);
 // file `name` in the same folder, between #line directives that tell each
 // file's lines apart: included file k is source string k, from line
 // k * 100000 + 1; the shader's own lines keep their numbers.
-// format_compile_error maps them back. Included files may not include others. Throws fw::Error naming
-// the line and the path of a file it cannot read.
+// format_compile_error maps them back. Included files may not include others. Throws fw::Error
+// naming the line and the path of a file it cannot read.
 std::string expand_includes(const std::string& text, const std::string& path,
                             std::vector<IncludedFile>& included);
 

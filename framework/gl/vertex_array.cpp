@@ -112,7 +112,7 @@ VertexArray VertexArray::blank(std::string label) {
     vao.handle_ = detail::Handle(id, [](GLuint name) { glDeleteVertexArrays(1, &name); });
     // A name from glGenVertexArrays becomes a vertex array object when it is
     // first bound; only then may it be labelled.
-    { const ScopedBinding bound = bind_vertex_array_scoped(id); }
+    const ScopedBinding bound = bind_vertex_array_scoped(id);
     set_object_label(GL_VERTEX_ARRAY, id, vao.label_);
     return vao;
 }

@@ -40,6 +40,11 @@ struct VertexAttribute {
 };
 
 namespace detail {
+// `M Vertex::*`, spelled as an alias so that clang-format 14 and 19 agree on it
+// (docs/conventions.md, Formatting).
+template <class Vertex, class M>
+using MemberPointer = M Vertex::*;
+
 // Format of one C++ member type: float, int, unsigned and their glm vectors,
 // plus glm::u8vec as normalised colours.
 template <GLint N, GLenum Type, bool Integer, bool Normalized>
@@ -89,7 +94,7 @@ public:
     // Feeds shader input `location` from `member` of every vertex. `Vertex`
     // must be default-constructible (a plain struct is).
     template <class Vertex, class M>
-    VertexLayout& attr(GLuint location, M Vertex::*member) {
+    VertexLayout& attr(GLuint location, detail::MemberPointer<Vertex, M> member) {
         using F = detail::AttribFormat<M>;
         const Vertex probe{};
         const auto* base = reinterpret_cast<const unsigned char*>(&probe);

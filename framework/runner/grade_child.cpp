@@ -50,7 +50,8 @@ json call_unit(const RegisteredLab& lab, const json& call) {
 
 }  // namespace
 
-void grade_child(const std::string& job_path, const std::string& out_dir, const std::string& backend) {
+void grade_child(const std::string& job_path, const std::string& out_dir,
+                 const std::string& backend) {
     json job = read_job(job_path);
     const RegisteredLab& lab = find_lab(job.value("lab", ""));
 
@@ -72,10 +73,13 @@ void grade_child(const std::string& job_path, const std::string& out_dir, const 
     std::unique_ptr<OffscreenContext> context;
     std::unique_ptr<LabRenderer> renderer;
     try {
-        context = create_offscreen_context(backend.empty() ? backend_from_env() : parse_backend(backend));
+        context =
+            create_offscreen_context(backend.empty() ? backend_from_env() : parse_backend(backend));
         const ContextInfo& info = context->info();
-        context_json = {{"backend", info.backend}, {"platform", info.platform},
-                        {"gl_version", info.gl_version}, {"gl_renderer", info.gl_renderer}};
+        context_json = {{"backend", info.backend},
+                        {"platform", info.platform},
+                        {"gl_version", info.gl_version},
+                        {"gl_renderer", info.gl_renderer}};
         renderer = std::make_unique<LabRenderer>(lab, info);
     } catch (const Error& e) {
         init_error = e.what();
@@ -90,8 +94,8 @@ void grade_child(const std::string& job_path, const std::string& out_dir, const 
             std::ofstream(base + ".error.txt") << e.what() << "\n";
         }
     }
-    write_json(out_dir + "/child.json", {{"complete", true}, {"context", context_json},
-                                         {"init_error", init_error}});
+    write_json(out_dir + "/child.json",
+               {{"complete", true}, {"context", context_json}, {"init_error", init_error}});
 }
 
 }  // namespace fw

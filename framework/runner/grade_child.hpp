@@ -17,6 +17,7 @@
 
 namespace fw {
 
-void grade_child(const std::string& job_path, const std::string& out_dir, const std::string& backend);
+void grade_child(const std::string& job_path, const std::string& out_dir,
+                 const std::string& backend);
 
 }  // namespace fw

@@ -1,4 +1,4 @@
-// `lab`: the labs themselves (SPEC.md, Executables). Lists labs and their
+// `lab`: the labs themselves (docs/contract.md, `lab`). Lists labs and their
 // checkpoints, renders one frame offscreen, or opens a window.
 #include <CLI/CLI.hpp>
 #include <cstdio>

@@ -53,8 +53,8 @@ GlfwLibrary::~GlfwLibrary() { glfwTerminate(); }
 
 GlfwWindow::GlfwWindow(const std::string& lab_id, const std::string& title, int width, int height) {
     glfwDefaultWindowHints();
-    // LABS.md: GL 4.3 core, not forward-compatible, no MSAA, no sRGB; the
-    // same context the offscreen backends create.
+    // docs/labs.md, What every lab shares: GL 4.3 core, not forward-compatible,
+    // no MSAA, no sRGB; the same context the offscreen backends create.
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);

@@ -1,8 +1,5 @@
 #include "grading/units/reference.hpp"
 
-#include "framework/lab.hpp"
-#include "framework/text.hpp"
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +7,8 @@
 #include <sstream>
 
 #include "framework/error.hpp"
+#include "framework/lab.hpp"
+#include "framework/text.hpp"
 
 namespace grading {
 

@@ -13,7 +13,6 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
-
 #include <random>
 #include <string>
 #include <string_view>
@@ -30,16 +29,18 @@ struct ArgDomain {
     double lo = -1.0, hi = 1.0;
 };
 inline ArgDomain scalar(double lo, double hi) { return {ArgDomain::Kind::Scalar, 1, lo, hi}; }
-inline ArgDomain integer(int lo, int hi) { return {ArgDomain::Kind::Integer, 1, double(lo), double(hi)}; }
+inline ArgDomain integer(int lo, int hi) {
+    return {ArgDomain::Kind::Integer, 1, double(lo), double(hi)};
+}
 inline ArgDomain vec(int n, double lo, double hi) { return {ArgDomain::Kind::Vector, n, lo, hi}; }
 inline ArgDomain unit_vec(int n) { return {ArgDomain::Kind::UnitVector, n, -1.0, 1.0}; }
 inline ArgDomain boolean() { return {ArgDomain::Kind::Bool, 1, 0.0, 1.0}; }
 
 struct ReferenceUnit {
-    std::string lab;                // lab id, e.g. "transforms"
-    fw::UnitFunction function;      // name + JSON call, as in the lab
-    std::vector<ArgDomain> domains; // one per argument
-    double tolerance = 1e-4;        // default; a check may set its own
+    std::string lab;                 // lab id, e.g. "transforms"
+    fw::UnitFunction function;       // name + JSON call, as in the lab
+    std::vector<ArgDomain> domains;  // one per argument
+    double tolerance = 1e-4;         // default; a check may set its own
 };
 
 // Registers `unit` for the lab in folder `lab_dir` ("01_transforms"), which
@@ -69,11 +70,10 @@ bool results_match(const nlohmann::json& expected, const nlohmann::json& observe
 #define COURSE_REFERENCE_CAT2(a, b) a##b
 #define COURSE_REFERENCE_CAT(a, b) COURSE_REFERENCE_CAT2(a, b)
 // COURSE_REFERENCE(function_name, &reference_fn, {domains...}[, tolerance])
-#define COURSE_REFERENCE(NAME, FN, ...)                                                    \
-    namespace {                                                                            \
-    static_assert(sizeof(FW_LAB_DIR) > 1,                                                  \
-                  "COURSE_REFERENCE is only for files in labs/NN_name/grading/");           \
-    const bool COURSE_REFERENCE_CAT(course_reference_, __LINE__) =                         \
-        ::grading::register_reference(FW_LAB_DIR,                                          \
-                                      {"", ::fw::unit_function(#NAME, FN), __VA_ARGS__});   \
+#define COURSE_REFERENCE(NAME, FN, ...)                                                           \
+    namespace {                                                                                   \
+    static_assert(sizeof(FW_LAB_DIR) > 1,                                                         \
+                  "COURSE_REFERENCE is only for files in labs/NN_name/grading/");                 \
+    const bool COURSE_REFERENCE_CAT(course_reference_, __LINE__) = ::grading::register_reference( \
+        FW_LAB_DIR, {"", ::fw::unit_function(#NAME, FN), __VA_ARGS__});                           \
     }

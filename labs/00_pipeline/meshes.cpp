@@ -1,4 +1,4 @@
-// Lab 0's geometry; the numbers are those of README.md and LABS.md.
+// Lab 0's geometry; the numbers are those of README.md and docs/labs.md.
 #include "meshes.hpp"
 
 #include <cstddef>

@@ -61,7 +61,8 @@ constexpr fw::Choice<Primitive> kPrimitives[] = {
     {Primitive::TriangleFan, "triangle_fan"},
 };
 enum class Cull { None, Back, Front };
-constexpr fw::Choice<Cull> kCulls[] = {{Cull::None, "none"}, {Cull::Back, "back"}, {Cull::Front, "front"}};
+constexpr fw::Choice<Cull> kCulls[] = {
+    {Cull::None, "none"}, {Cull::Back, "back"}, {Cull::Front, "front"}};
 
 // scene=culling's camera: on the +z axis looking at the cube's centre.
 const glm::vec3 kEye{0.0f, 0.0f, 3.0f};
@@ -75,7 +76,8 @@ constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
 // the buffer bound to GL_ARRAY_BUFFER when it is called.
 void describe_vertex_layout(const fw::Buffer& vertices) {
     // BEGIN SOLUTION
-    // STUDENT: (void)vertices;  // TODO: glBindBuffer, then per attribute glVertexAttribPointer and glEnableVertexAttribArray
+    // STUDENT: (void)vertices;  // TODO: glBindBuffer(GL_ARRAY_BUFFER, vertices.id()), then for
+    // STUDENT: // each attribute glVertexAttribPointer and glEnableVertexAttribArray
     glBindBuffer(GL_ARRAY_BUFFER, vertices.id());
     glVertexAttribPointer(A_POSITION, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(offsetof(Vertex, position)));
@@ -94,7 +96,8 @@ void describe_vertex_layout(const fw::Buffer& vertices) {
 void draw_face_set(Storage storage, const fw::VertexArray& indexed, const fw::VertexArray& flat,
                    GLsizei count) {
     // BEGIN SOLUTION
-    // STUDENT: (void)storage, (void)indexed, (void)flat, (void)count;  // TODO: glBindVertexArray, then glDrawElements or glDrawArrays
+    // STUDENT: (void)storage, (void)indexed, (void)flat, (void)count;
+    // STUDENT: // TODO: glBindVertexArray, then glDrawElements (indexed) or glDrawArrays (flat)
     if (storage == Storage::Indexed) {
         glBindVertexArray(indexed.id());
         glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
@@ -125,7 +128,8 @@ void set_depth_test(bool on) {
 // turned away from the eye, Cull::Front the faces turned towards it.
 void set_culling(Cull cull) {
     // BEGIN SOLUTION
-    // STUDENT: (void)cull;  // TODO: glFrontFace; unless Cull::None, glEnable(GL_CULL_FACE), glCullFace
+    // STUDENT: (void)cull;  // TODO: glFrontFace; unless Cull::None, glEnable(GL_CULL_FACE),
+    // STUDENT: // and glCullFace
     glFrontFace(GL_CCW);
     if (cull == Cull::None) {
         glDisable(GL_CULL_FACE);

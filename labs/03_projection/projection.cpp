@@ -170,8 +170,7 @@ public:
         nlohmann::json centres = nlohmann::json::array();
         for (const Object& object : scene_objects(p.get<Scene>("scene"))) {
             const glm::vec4 clip = clip_from_world * object.model * glm::vec4(0, 0, 0, 1);
-            const glm::vec3 window =
-                viewport(glm::vec3(clip) / clip.w, frame.width, frame.height);
+            const glm::vec3 window = viewport(glm::vec3(clip) / clip.w, frame.width, frame.height);
             centres.push_back({{"object", object.name},
                                {"clip", {clip.x, clip.y, clip.z, clip.w}},
                                {"window", {window.x, window.y, window.z}}});

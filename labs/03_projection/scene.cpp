@@ -57,8 +57,10 @@ std::vector<Vertex> unit_square() {
 
 std::vector<Object> scene_objects(Scene scene) {
     switch (scene) {
-        case Scene::Cards: return cards();
-        case Scene::ZFight: return zfight_quads();
+        case Scene::Cards:
+            return cards();
+        case Scene::ZFight:
+            return zfight_quads();
     }
     throw fw::Error("lab projection: scene " + std::to_string(static_cast<int>(scene)) +
                     " is not a Scene");

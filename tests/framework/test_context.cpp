@@ -68,7 +68,7 @@ TEST_CASE("the context is OpenGL 4.3 core or newer") {
                                            << ", flags " << flags);
     CHECK((major > 4 || (major == 4 && minor >= 3)));
     CHECK((profile & GL_CONTEXT_CORE_PROFILE_BIT) != 0);
-    // LABS.md: no forward-compatible flag (OSMesa refuses it).
+    // docs/labs.md, What every lab shares: no forward-compatible flag (OSMesa refuses it).
     CHECK((flags & GL_CONTEXT_FLAG_FORWARD_COMPATIBLE_BIT) == 0);
     CHECK(glGetError() == GL_NO_ERROR);
 }

@@ -77,8 +77,8 @@ TEST_CASE("PNG round trip is pixel exact and stores the bottom row last") {
 
 TEST_CASE("read_png converts grey and RGB files to RGBA") {
     // Written with stb directly, top row first: 1 and 3 channels per pixel.
-    const unsigned char grey[] = {10, 20, 30, 40};      // 2 x 2
-    const unsigned char rgb[] = {1, 2, 3, 4, 5, 6};      // 2 x 1
+    const unsigned char grey[] = {10, 20, 30, 40};   // 2 x 2
+    const unsigned char rgb[] = {1, 2, 3, 4, 5, 6};  // 2 x 1
     std::string grey_path = fw::test::out_dir() + "/grey.png";
     std::string rgb_path = fw::test::out_dir() + "/rgb.png";
     REQUIRE(stbi_write_png(grey_path.c_str(), 2, 2, 1, grey, 2));
@@ -128,7 +128,7 @@ TEST_CASE("Image rejects negative sizes") {
     CHECK_THROWS_AS(fw::DepthImage(4, -1), fw::UsageError);
 }
 
-TEST_CASE("PFM round trip is exact and the header matches SPEC.md") {
+TEST_CASE("PFM round trip is exact and the header matches docs/contract.md") {
     fw::DepthImage d(3, 2);
     const float values[] = {0.0f, 1.0f, 0.5f, 1e-7f, 0.999999f, -3.25f};
     std::memcpy(d.values.data(), values, sizeof values);
@@ -152,8 +152,8 @@ TEST_CASE("PFM round trip is exact and the header matches SPEC.md") {
 
 TEST_CASE("read_pfm reads big-endian files (positive scale)") {
     // 0.5f is 0x3F000000; 2.0f is 0x40000000; big endian = most significant byte first.
-    std::string bytes = std::string("Pf\n2 1\n1.0\n") + std::string("\x3F\0\0\0", 4) +
-                        std::string("\x40\0\0\0", 4);
+    std::string bytes =
+        std::string("Pf\n2 1\n1.0\n") + std::string("\x3F\0\0\0", 4) + std::string("\x40\0\0\0", 4);
     std::string path = fw::test::out_dir() + "/big.pfm";
     write_bytes(path, bytes);
     fw::DepthImage d = fw::read_pfm(path);

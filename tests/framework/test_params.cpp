@@ -30,7 +30,9 @@ std::string error_of(F&& f) {
     return fw::test::thrown<fw::UsageError>(f);
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 }  // namespace
 
@@ -77,7 +79,8 @@ TEST_CASE("bad values name the lab, the parameter and what is valid") {
     CHECK(contains(error_of([&] { v.set("subdiv", "2.5"); }), "not an integer"));
     CHECK(contains(error_of([&] { v.set("scene", "teapot"); }), "valid values: cards, zfight"));
     CHECK(contains(error_of([&] { v.set("tint", "orange"); }), "hex rrggbb"));
-    CHECK(contains(error_of([&] { v.set("nope", "1"); }), "its parameters are: fov, subdiv, wireframe, scene, tint"));
+    CHECK(contains(error_of([&] { v.set("nope", "1"); }),
+                   "its parameters are: fov, subdiv, wireframe, scene, tint"));
     CHECK(contains(error_of([&] { v.set_assignment("fov"); }), "name=value"));
     // A failed set leaves the previous value.
     CHECK(v.number("fov") == 60.0f);
@@ -113,20 +116,20 @@ TEST_CASE("a declaration whose default is outside its range or choices is refuse
 
 TEST_CASE("a choice declaration is checked when it is made") {
     enum class Abc { A, B, C };
-    const std::string missing = fw::test::thrown([] {
-        fw::Param::choice("x", {fw::Choice<Abc>{Abc::A, "a"}, {Abc::B, "b"}}, Abc::C);
-    });
+    using C = fw::Choice<Abc>;
+    const auto default_missing = [] {
+        fw::Param::choice("x", {C{Abc::A, "a"}, {Abc::B, "b"}}, Abc::C);
+    };
+    const std::string missing = fw::test::thrown(default_missing);
     CHECK(contains(missing, "parameter 'x'"));
     CHECK(contains(missing, "not one of its choices {a, b}"));
-    CHECK(contains(fw::test::thrown([] {
-                       fw::Param::choice("x", {fw::Choice<Abc>{Abc::A, "a"}, {Abc::B, "a"}}, Abc::A);
-                   }),
-                   "the name 'a' is given twice"));
-    CHECK(contains(fw::test::thrown([] {
-                       fw::Param::choice("x", {fw::Choice<Abc>{Abc::A, "a"}, {Abc::A, "b"}}, Abc::A);
-                   }),
-                   "'a' and 'b' are the same enum value"));
-    const fw::Param ok = fw::Param::choice("x", {fw::Choice<Abc>{Abc::C, "c"}, {Abc::A, "a"}}, Abc::A);
+    const auto name_twice = [] { fw::Param::choice("x", {C{Abc::A, "a"}, {Abc::B, "a"}}, Abc::A); };
+    CHECK(contains(fw::test::thrown(name_twice), "the name 'a' is given twice"));
+    const auto value_twice = [] {
+        fw::Param::choice("x", {C{Abc::A, "a"}, {Abc::A, "b"}}, Abc::A);
+    };
+    CHECK(contains(fw::test::thrown(value_twice), "'a' and 'b' are the same enum value"));
+    const fw::Param ok = fw::Param::choice("x", {C{Abc::C, "c"}, {Abc::A, "a"}}, Abc::A);
     CHECK(ok.default_text() == "a");
     CHECK(ok.range_text() == "{c, a}");
 }
@@ -142,8 +145,7 @@ TEST_CASE("a lab's number and id come from its folder's name") {
     CHECK(id == "x");
     for (const char* bad : {"robot_arm", "2_robot", "02-robot", "02_", "02_Robot", "02_a b"}) {
         INFO(std::string(bad));
-        CHECK(contains(fw::test::thrown([&] { fw::parse_lab_dir(bad, number, id); }),
-                       "NN_"));
+        CHECK(contains(fw::test::thrown([&] { fw::parse_lab_dir(bad, number, id); }), "NN_"));
     }
 }
 
@@ -181,12 +183,21 @@ TEST_CASE("checkpoint files are validated against the declaration") {
         }
         return std::string("(no error)");
     };
-    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "params": {"fov": 1}}]})"), "checkpoint 'a'"));
-    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "params": {"zoom": 1}}]})"), "no parameter 'zoom'"));
-    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a"}, {"name": "a"}]})"), "used twice"));
-    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "visibility": "secret"}]})"), "visibility"));
-    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "param": {}}]})"), "unknown field \"param\""));
-    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a b"}]})"), "letters, digits"));
+    CHECK(contains(
+        error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "params": {"fov": 1}}]})"),
+        "checkpoint 'a'"));
+    CHECK(contains(
+        error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "params": {"zoom": 1}}]})"),
+        "no parameter 'zoom'"));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a"}, {"name": "a"}]})"),
+                   "used twice"));
+    CHECK(contains(
+        error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "visibility": "secret"}]})"),
+        "visibility"));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a", "param": {}}]})"),
+                   "unknown field \"param\""));
+    CHECK(contains(error_for(R"({"lab": "demo", "checkpoints": [{"name": "a b"}]})"),
+                   "letters, digits"));
     CHECK(contains(error_for(R"({"lab": "other", "checkpoints": []})"), "belongs to lab 'demo'"));
     CHECK(contains(error_for(R"({"checkpoints": []})"), "not in a lab folder"));
     CHECK(contains(error_for(R"({"checkpoints": [)"), dir + "/cp.json"));

@@ -101,8 +101,7 @@ TEST_CASE("shader text: a bad #include names the line and the file") {
     fw::test::check_mentions(error("#version 430 core\n#include \"missing.glsl\"\n"),
                              {fw::display_path(dir + "/y.frag") + ":2:",
                               "cannot read included file", dir + "/missing.glsl"});
-    fw::test::check_mentions(error("#include <shared.glsl>\n"),
-                             {"y.frag:1:", "#include \"name\""});
+    fw::test::check_mentions(error("#include <shared.glsl>\n"), {"y.frag:1:", "#include \"name\""});
     fw::test::check_mentions(error("#include \"../other/shared.glsl\"\n"),
                              {"y.frag:1:", "same folder"});
     fw::test::write_text(dir + "/outer.glsl", "#include \"inner.glsl\"\n");

@@ -1,6 +1,6 @@
-// Program::set: every uniform error of SPEC.md (unknown, optimised out, wrong
-// type, wrong size) and the values that do arrive, read back with
-// glGetUniform or by rendering.
+// Program::set: every uniform error of docs/contract.md, Exit status and
+// errors (unknown, optimised out, wrong type, wrong size), and the values
+// that do arrive, read back with glGetUniform or by rendering.
 #include <glad/gl.h>
 
 #include <functional>

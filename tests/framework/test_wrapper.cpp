@@ -239,20 +239,21 @@ TEST_CASE("vertex array: a blank one described by hand draws as one described by
 
 TEST_CASE("shader: an error in an #included file names that file and quotes its line") {
     fw::enable_debug_output();
-    const std::string msg = thrown([] {
+    const auto compile = [] {
         fw::Program::from_files({"tests/color.vert", "tests/broken_include.frag"});
-    });
-    check_mentions(msg, {"shaders/tests/broken_shared.glsl:3:", "fragment shader failed to compile",
-                         "undeclared_grey",
-                         "shaders/tests/broken_shared.glsl:3 | const vec3 kGrey = undeclared_grey;"});
+    };
+    const std::string msg = thrown(compile);
+    check_mentions(msg,
+                   {"shaders/tests/broken_shared.glsl:3:", "fragment shader failed to compile",
+                    "undeclared_grey",
+                    "shaders/tests/broken_shared.glsl:3 | const vec3 kGrey = undeclared_grey;"});
     CHECK_NOTHROW(fw::check_gl("after a failed compile"));
 }
 
 TEST_CASE("shader: a compile error names the file, the stage, the line and quotes it") {
     fw::enable_debug_output();  // as `lab` runs: GL's debug messages collected
-    std::string msg = thrown([] {
-        fw::Program::from_files({"tests/color.vert", "tests/broken.frag"});
-    });
+    const auto compile = [] { fw::Program::from_files({"tests/color.vert", "tests/broken.frag"}); };
+    std::string msg = thrown(compile);
     check_mentions(msg, {"shaders/tests/broken.frag:9:", "fragment shader failed to compile",
                          "undeclared_colour", "  9 |     o_color = vec4(undeclared_colour, 1.0);"});
 
@@ -268,9 +269,10 @@ TEST_CASE("shader: a compile error names the file, the stage, the line and quote
 
 TEST_CASE("program: a link error names the files and gives the linker's log") {
     fw::enable_debug_output();
-    std::string msg = thrown([] {
+    const auto link = [] {
         fw::Program::from_files({"tests/mismatch.vert", "tests/mismatch.frag"});
-    });
+    };
+    std::string msg = thrown(link);
     check_mentions(msg,
                    {"failed to link", "tests/mismatch.vert", "tests/mismatch.frag", "v_value"});
     CHECK_NOTHROW(fw::check_gl("after a failed link"));
@@ -339,13 +341,11 @@ TEST_CASE("framebuffer: a plane at NDC z = 0.5 reads back window depth 0.75") {
 }
 
 TEST_CASE("framebuffer: a size of zero or above the GL limit names the field and the limit") {
-    check_mentions(thrown<fw::UsageError>([] {
-                       fw::Framebuffer fb({0, 16, "zero"});
-                   }),
+    const auto zero = [] { fw::Framebuffer fb({0, 16, "zero"}); };
+    check_mentions(thrown<fw::UsageError>(zero),
                    {"FramebufferDesc.width must be 1 to", "not 0", "'zero'"});
-    check_mentions(thrown<fw::UsageError>([] {
-                       fw::Framebuffer fb({16, 1 << 20, "huge"});
-                   }),
+    const auto huge = [] { fw::Framebuffer fb({16, 1 << 20, "huge"}); };
+    check_mentions(thrown<fw::UsageError>(huge),
                    {"FramebufferDesc.height must be 1 to", "GL_MAX_", "not 1048576"});
 }
 

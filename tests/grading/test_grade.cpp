@@ -1,4 +1,4 @@
-// `course grade` and `course bless` on the real lab 0 (SPEC.md, `course`),
+// `course grade` and `course bless` on the real lab 0 (docs/contract.md, `course`),
 // and the usage errors that stop a run before any child starts (Errors).
 // Expected scores come from lab 0's data file, read here.
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// `course grade` against hostile children (SPEC.md, `course grade`): a crash,
+// `course grade` against hostile children (docs/contract.md, `course grade`): a crash,
 // a hang, a flood of output, an oversized file, a full disk, garbage, links to the
 // references, and a child that claims a perfect score. Each fails exactly the
 // checks of its own lab with the reason, the reports are complete, and the

@@ -1,4 +1,4 @@
-// `course grade --run-as USER` (SPEC.md, `course grade`): the child runs as
+// `course grade --run-as USER` (docs/contract.md, `course grade`): the child runs as
 // that user and can neither read a reference nor write a result. Needs root
 // and a user `nobody`; skips (exit 77) with the reason otherwise.
 #include <pwd.h>
@@ -49,7 +49,7 @@ Staged stage() {
 }
 
 mode_t mode_of(const std::string& path) {
-    struct stat st {};
+    struct stat st = {};
     stat(path.c_str(), &st);
     return st.st_mode & 07777;
 }

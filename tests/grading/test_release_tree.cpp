@@ -37,9 +37,6 @@ using fw::shell_quote;
 using fw::test::read_text;
 using fw::test::write_text;
 
-
-
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -64,14 +61,14 @@ std::string jobs() { return std::to_string(std::max(1u, std::thread::hardware_co
 // ccache when it is installed.
 void build_tree(const fs::path& source, const std::string& targets) {
     const std::string build = (source / "build").string();
-    std::string configure = "cmake -S " + shell_quote(source.string()) + " -B " + shell_quote(build) +
-                            " -DCMAKE_BUILD_TYPE=Release -DLAB_WERROR=ON";
+    std::string configure = "cmake -S " + shell_quote(source.string()) + " -B " +
+                            shell_quote(build) + " -DCMAKE_BUILD_TYPE=Release -DLAB_WERROR=ON";
     if (run_command("command -v ccache").exit_code == 0)
         configure += " -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache";
     REQUIRE_MESSAGE(run(configure).exit_code == 0, "configuring " << source);
     REQUIRE_MESSAGE(
-        run("cmake --build " + shell_quote(build) + " -j" + jobs() + " --target " + targets).exit_code ==
-            0,
+        run("cmake --build " + shell_quote(build) + " -j" + jobs() + " --target " + targets)
+                .exit_code == 0,
         "building " << targets << " in " << source);
 }
 
@@ -89,10 +86,10 @@ Grade grade(const std::string& course, const std::string& lab, const std::string
             const fs::path& out, const std::string& env = "") {
     fs::remove_all(out);
     Grade g;
-    auto r =
-        run("env -u LAB_ROOT -u LAB_SHADER_DIR " + env + " " + shell_quote(course) + " grade " + labs +
-                " --lab " + shell_quote(lab) + " --out " + shell_quote(out.string()) + " --jobs " + jobs(),
-            /*may_fail=*/true);
+    auto r = run("env -u LAB_ROOT -u LAB_SHADER_DIR " + env + " " + shell_quote(course) +
+                     " grade " + labs + " --lab " + shell_quote(lab) + " --out " +
+                     shell_quote(out.string()) + " --jobs " + jobs(),
+                 /*may_fail=*/true);
     g.exit_code = r.exit_code;
     g.output = r.output;
     if (!fs::exists(out / "results.json")) return g;
@@ -123,8 +120,8 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
     const fs::path source = fw::test::source_dir(), dir = fw::test::out_dir();
     const fs::path student = dir / "student";
     fs::remove_all(student);
-    auto r = run("env -u LAB_ROOT " + shell_quote(fw::test::bin_dir() + "/course") + " release --out " +
-                 shell_quote(student.string()));
+    auto r = run("env -u LAB_ROOT " + shell_quote(fw::test::bin_dir() + "/course") +
+                 " release --out " + shell_quote(student.string()));
     MESSAGE(r.output);
     REQUIRE(r.exit_code == 0);
 
@@ -140,6 +137,14 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
                           "marker left in " << e.path().string() << ":" << n << ": " << line);
     }
     CHECK(code_files > 0);
+
+    // The student's code is formatted as the course's is (the release turns
+    // STUDENT lines into code, which must fit too): the format check passes on
+    // the student tree, or skips (77) where clang-format is missing and not
+    // required.
+    const auto format = run("bash " + shell_quote((source / "scripts/check-format.sh").string()) +
+                            " " + shell_quote(student.string()));
+    CHECK_MESSAGE((format.exit_code == 0 || format.exit_code == 77), format.output);
 
     // Each lab's checkpoints: exactly the visible ones; hidden references absent.
     for (const std::string& lab : lab_dirs(source)) {
@@ -271,8 +276,8 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
             shader ? shaders / fs::path(b.file).lexically_relative("shaders") : tree / b.file;
         write_text(target, grading::student_text_of_block(original, b.file, b.index));
         std::string result;
-        if (!shader && run("cmake --build " + shell_quote((tree / "build").string()) + " -j" + jobs() +
-                           " --target lab")
+        if (!shader && run("cmake --build " + shell_quote((tree / "build").string()) + " -j" +
+                           jobs() + " --target lab")
                                .exit_code != 0) {
             result = "the student version does not build";
         } else {

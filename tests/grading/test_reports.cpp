@@ -1,4 +1,4 @@
-// The reports of `course grade` (SPEC.md): summary.txt, results.json
+// The reports of `course grade` (docs/contract.md, Reports): summary.txt, results.json
 // (Gradescope's format), junit.xml and the self-contained index.html, written
 // for a run built by hand: a passing image check with real PNG files, a
 // failing probe whose output holds markup and control characters, a hidden
@@ -202,8 +202,8 @@ TEST_CASE("index.html is self-contained and shows each check with its images") {
     const std::string html = read_text(f.dir + "/index.html");
     const std::string uri = "data:image/png;base64,";
     CHECK(count(html, uri) == 3);
-    for (const char* external : {"src=\"http", "href=\"http", "src=\"//", "href=\"//", "<link",
-                                 "<script", "@import"})
+    for (const char* external :
+         {"src=\"http", "href=\"http", "src=\"//", "href=\"//", "<link", "<script", "@import"})
         CHECK_MESSAGE(html.find(external) == std::string::npos, "external reference " << external);
     // Images are CSS backgrounds, each embedded once: url() only ever holds data.
     for (size_t at = html.find("url("); at != std::string::npos; at = html.find("url(", at + 1))

@@ -67,8 +67,7 @@ void check_mentions(const std::string& message, const std::vector<std::string>& 
                       "expected the message to contain '" << n << "'");
 }
 
-LabUnderTest::LabUnderTest(const RegisteredLab& lab_)
-    : lab(lab_), renderer(lab, context_info()) {}
+LabUnderTest::LabUnderTest(const RegisteredLab& lab_) : lab(lab_), renderer(lab, context_info()) {}
 LabUnderTest::LabUnderTest(const std::string& id) : LabUnderTest(find_lab(id)) {}
 
 ParamValues LabUnderTest::params(const Settings& settings) const {

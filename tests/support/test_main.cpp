@@ -24,8 +24,9 @@ std::unique_ptr<fw::OffscreenContext> g_context;
 
 const fw::ContextInfo& fw::test::context_info() {
     if (!g_context) {
-        std::fprintf(stderr, "test error: context_info() in a test without a GL context; "
-                             "declare it with lab_gl_test in tests/CMakeLists.txt\n");
+        std::fprintf(stderr,
+                     "test error: context_info() in a test without a GL context; "
+                     "declare it with lab_gl_test in tests/CMakeLists.txt\n");
         std::abort();
     }
     return g_context->info();

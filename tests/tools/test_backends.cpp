@@ -1,6 +1,6 @@
 // The two offscreen backends render every checkpoint of every lab within the
 // fuzzy threshold of each other, and byte for byte alike when the same
-// renderer is behind both (SPEC.md, Checks, `image`), and `lab
+// renderer is behind both (docs/contract.md, Checks, `image`), and `lab
 // render-checkpoints` writes the PNG, PFM and stats of each.
 #include <cmath>
 #include <cstdlib>
@@ -18,7 +18,8 @@ bool render_all(const std::string& backend, const std::string& dir, std::string&
     std::filesystem::remove_all(dir);
     auto r = fw::test::run_command(fw::test::bin_dir() + "/lab render-checkpoints --backend " +
                                    backend + " --out " + dir);
-    MESSAGE("render-checkpoints --backend " << backend << ": exit " << r.exit_code << "\n" << r.output);
+    MESSAGE("render-checkpoints --backend " << backend << ": exit " << r.exit_code << "\n"
+                                            << r.output);
     if (r.exit_code == 3) {
         why = r.output;
         return false;

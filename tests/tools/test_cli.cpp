@@ -1,5 +1,6 @@
-// The `lab` executable's errors (SPEC.md, Errors): every error names the thing
-// at fault and what would fix it, and exits non-zero. Each case runs the real
+// The `lab` executable's errors (docs/contract.md, Exit status and errors):
+// every error names the thing at fault and what would fix it, and exits
+// non-zero. Each case runs the real
 // executable as a child process and checks the exit status and the message.
 #include <filesystem>
 #include <fstream>
@@ -156,7 +157,8 @@ TEST_CASE("a shader that fails to compile: path, stage, line and source line, ex
     in.close();
     int line = 1;
     for (char c : text.substr(0, text.find("void main"))) line += c == '\n';
-    std::ofstream(broken) << text.substr(0, text.find("void main")) << "float oops = undeclared_name;\n"
+    std::ofstream(broken) << text.substr(0, text.find("void main"))
+                          << "float oops = undeclared_name;\n"
                           << text.substr(text.find("void main"));
     auto r = run_lab("render pipeline -o /dev/null", "LAB_SHADER_DIR=" + dir);
     CHECK(r.exit_code == 1);
@@ -174,7 +176,7 @@ TEST_CASE("an output file that cannot be written names its path, exit 1") {
     CHECK(contains(r.output, "/nonexistent-dir/out.png"));
 }
 
-TEST_CASE("render writes PNG, PFM and stats with every SPEC field") {
+TEST_CASE("render writes PNG, PFM and stats with every documented field") {
     std::string dir = fw::test::out_dir();
     auto r = run_lab("render pipeline -o " + dir + "/f.png --depth-out " + dir + "/f.pfm --stats " +
                      dir + "/f.json --size 64x32");
@@ -187,10 +189,11 @@ TEST_CASE("render writes PNG, PFM and stats with every SPEC field") {
     CHECK(depth.height == 32);
     std::ifstream in(dir + "/f.json");
     auto stats = nlohmann::json::parse(in);
-    for (const char* key : {"lab", "params", "backend", "gl_version", "gl_renderer", "width", "height",
-                            "primitives_generated", "render_ms"})
+    for (const char* key : {"lab", "params", "backend", "gl_version", "gl_renderer", "width",
+                            "height", "primitives_generated", "render_ms"})
         CHECK_MESSAGE(stats.contains(key), "stats lacks " << key);
     CHECK(stats["width"] == 64);
     CHECK(stats["params"]["scene"] == "order");
-    CHECK(stats["params"].size() == nlohmann::json::parse(run_lab("list --json").output)[0]["params"].size());
+    CHECK(stats["params"].size() ==
+          nlohmann::json::parse(run_lab("list --json").output)[0]["params"].size());
 }

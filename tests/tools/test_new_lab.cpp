@@ -40,8 +40,8 @@ fw::test::CommandResult run(const std::string& command) {
 
 // What git says has changed in `tree` since its commit, one line per path.
 std::string changes(const fs::path& tree) {
-    const fw::test::CommandResult r =
-        run("git -C " + shell_quote(tree.string()) + " status --porcelain --untracked-files=normal");
+    const fw::test::CommandResult r = run("git -C " + shell_quote(tree.string()) +
+                                          " status --porcelain --untracked-files=normal");
     REQUIRE(r.exit_code == 0);
     return r.output;
 }
@@ -52,12 +52,13 @@ void copy_repository(const fs::path& tree) {
     fs::remove_all(tree);
     fs::create_directories(tree);
     const std::string src = shell_quote(fw::test::source_dir());
-    REQUIRE(run("git -C " + src + " ls-files -z --cached --others --exclude-standard | "
-                "tar -C " + src + " --null -T - -cf - | tar -C " + shell_quote(tree.string()) +
-                " -xf -")
+    REQUIRE(run("git -C " + src +
+                " ls-files -z --cached --others --exclude-standard | "
+                "tar -C " +
+                src + " --null -T - -cf - | tar -C " + shell_quote(tree.string()) + " -xf -")
                 .exit_code == 0);
-    const std::string git = "git -C " + shell_quote(tree.string()) +
-                            " -c user.name=test -c user.email=test@localhost ";
+    const std::string git =
+        "git -C " + shell_quote(tree.string()) + " -c user.name=test -c user.email=test@localhost ";
     REQUIRE(run(git + "init -q && " + git + "add -A && " + git + "commit -q -m copy").exit_code ==
             0);
     REQUIRE(changes(tree).empty());
@@ -67,7 +68,8 @@ void copy_repository(const fs::path& tree) {
 // namespace: the only edit a course's staff makes to a copied lab.
 void copy_lab(const fs::path& tree) {
     const std::string t = shell_quote(tree.string());
-    REQUIRE(run("cd " + t + " && cp -r labs/00_pipeline labs/07_warmup && "
+    REQUIRE(run("cd " + t +
+                " && cp -r labs/00_pipeline labs/07_warmup && "
                 "cp -r shaders/00_pipeline shaders/07_warmup && "
                 "find labs/07_warmup -name '*.cpp' -o -name '*.hpp' | xargs sed -i "
                 "-e 's/namespace pipeline/namespace warmup/g' -e 's/pipeline::/warmup::/g'")
@@ -120,7 +122,8 @@ TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, re
         run("LAB_ROOT=" + shell_quote(tree.string()) + " " + bin + "course grade warmup --out " +
             shell_quote(grade.string()));
     CHECK(graded.exit_code == 0);
-    const nlohmann::json results = nlohmann::json::parse(read_text((grade / "results.json").string()));
+    const nlohmann::json results =
+        nlohmann::json::parse(read_text((grade / "results.json").string()));
     CHECK(results.at("score") == results.at("max_score"));
     CHECK(results.at("max_score").get<double>() > 0);
 

@@ -1,4 +1,4 @@
-// `lab run` (SPEC.md, Executables): under Xvfb the window shows exactly what
+// `lab run` (docs/contract.md, `lab`): under Xvfb the window shows exactly what
 // `lab render` draws offscreen, the panel draws on top of it, and without a
 // display the error says what is missing and what to run instead. Each case
 // runs the real `lab` executable as a child process.

@@ -51,8 +51,7 @@ COURSE_REFERENCE(scale, &ref_scale, {grading::vec(3, -10, 10)})
 COURSE_REFERENCE(rotateX, &ref_rotate_x, {grading::scalar(-720, 720)})
 COURSE_REFERENCE(rotateY, &ref_rotate_y, {grading::scalar(-720, 720)})
 COURSE_REFERENCE(rotateZ, &ref_rotate_z, {grading::scalar(-720, 720)})
-COURSE_REFERENCE(rotate, &ref_rotate,
-                 {grading::scalar(-720, 720), grading::vec(3, -10, 10)})
+COURSE_REFERENCE(rotate, &ref_rotate, {grading::scalar(-720, 720), grading::vec(3, -10, 10)})
 COURSE_REFERENCE(compose, &ref_compose,
                  {grading::scalar(-2, 2), grading::scalar(-2, 2), grading::scalar(-360, 360),
                   grading::scalar(-3, 3), grading::scalar(-3, 3), grading::integer(0, 5)})

@@ -12,8 +12,8 @@
 #include "framework/checkpoints.hpp"
 #include "framework/lab.hpp"
 #include "framework/render.hpp"
-#include "transforms_glm.hpp"
 #include "tests/support/test_support.hpp"
+#include "transforms_glm.hpp"
 
 using namespace transforms_test;
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "framework/lab.hpp"
-#include "transforms_math.hpp"
-#include "transforms_glm.hpp"
 #include "tests/support/test_support.hpp"
+#include "transforms_glm.hpp"
+#include "transforms_math.hpp"
 
 using namespace transforms_test;
 
@@ -128,9 +128,8 @@ TEST_CASE("transforms: compose multiplies the named matrices left to right") {
     }
     for (const char* bad : {"", "tr", "trss", "ttt", "TRS", "xyz"}) {
         CAPTURE(bad);
-        fw::test::check_mentions(fw::test::thrown<fw::UsageError>([&] {
-                                     transforms::compose(bad, kIdentity, kIdentity, kIdentity);
-                                 }),
+        const auto compose_bad = [&] { transforms::compose(bad, kIdentity, kIdentity, kIdentity); };
+        fw::test::check_mentions(fw::test::thrown<fw::UsageError>(compose_bad),
                                  {"'" + std::string(bad) + "'", "trs", "srt"});
     }
 }
@@ -161,9 +160,8 @@ TEST_CASE("transforms: the unit function compose is the sheet's M for every orde
         const nlohmann::json out = f.call(nlohmann::json::array({1, 0.5, 90, 2, 1, 5}));
         CHECK(same_matrix(glm_model(1, 0.5f, 90, 2, 1, "srt"), fw::from_json_value<glm::mat4>(out),
                           "compose via JSON"));
-        fw::test::check_mentions(fw::test::thrown<fw::UsageError>([&] {
-                                     f.call(nlohmann::json::array({0, 0, 0, 1, 1, 6}));
-                                 }),
+        const auto bad_order = [&] { f.call(nlohmann::json::array({0, 0, 0, 1, 1, 6})); };
+        fw::test::check_mentions(fw::test::thrown<fw::UsageError>(bad_order),
                                  {"order", "6", "0..5"});
     }
 }

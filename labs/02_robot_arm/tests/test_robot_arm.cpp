@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
+#include "arm.hpp"
 #include "framework/checkpoints.hpp"
 #include "framework/lab.hpp"
 #include "framework/render.hpp"
-#include "arm.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {

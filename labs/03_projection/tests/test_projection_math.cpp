@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "framework/lab.hpp"
 #include "camera_math.hpp"
+#include "framework/lab.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
