@@ -189,7 +189,7 @@ void check_others_unaffected(Autograder& ag, const Run& run) {
     for (const json& t : run.results["tests"]) {
         if (lab_of(t) == ag.expected.victim) continue;
         ++compared;
-        CHECK_MESSAGE(t["status"] == want[t["name"]],
+        CHECK_MESSAGE(t["status"].get<std::string>() == want[t["name"]],
                       t["name"] << ": Expected " << want[t["name"]]
                                 << " (as with the solution), Observed " << t["status"] << "\n"
                                 << t.value("output", ""));

@@ -272,7 +272,7 @@ TEST_CASE("transforms: checkpoints.json: probes agree with the sheet and hold fo
                     ++units;
                     const fw::UnitFunction* f = nullptr;
                     for (const fw::UnitFunction& u : lab.lab.info.functions)
-                        if (u.name == check["function"]) f = &u;
+                        if (u.name == check["function"].get<std::string>()) f = &u;
                     REQUIRE(f != nullptr);
                     for (const nlohmann::json& args : check["edge"]) {
                         CAPTURE(args.dump());

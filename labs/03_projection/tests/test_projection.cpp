@@ -377,7 +377,7 @@ TEST_CASE(
                     ++units;
                     const auto& fns = lab.lab.info.functions;
                     auto f = std::find_if(fns.begin(), fns.end(), [&](const fw::UnitFunction& u) {
-                        return u.name == check["function"];
+                        return u.name == check["function"].get<std::string>();
                     });
                     REQUIRE(f != fns.end());
                     for (const nlohmann::json& args : check.at("edge"))
