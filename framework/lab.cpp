@@ -60,6 +60,12 @@ void parse_lab_dir(std::string_view dir, int& number, std::string& id) {
 }
 
 bool register_lab(std::string_view dir, LabInfo info, LabFactory factory) {
+    // The folder's name decides; a value the lab wrote itself would be
+    // silently replaced, so it is refused instead.
+    if (info.number != 0 || !info.id.empty() || !info.dir.empty())
+        throw Error("lab folder '" + std::string(dir) +
+                    "': info() sets number, id or dir, which come from the folder's name; "
+                    "remove them from info()");
     parse_lab_dir(dir, info.number, info.id);
     info.dir = std::string(dir);
     auto& labs = registry();

@@ -5,6 +5,7 @@
 
 #include "framework/checkpoints.hpp"
 #include "framework/error.hpp"
+#include "framework/lab.hpp"
 #include "framework/params.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -132,6 +133,16 @@ TEST_CASE("a choice declaration is checked when it is made") {
     const fw::Param ok = fw::Param::choice("x", {C{Abc::C, "c"}, {Abc::A, "a"}}, Abc::A);
     CHECK(ok.default_text() == "a");
     CHECK(ok.range_text() == "{c, a}");
+}
+
+TEST_CASE("a lab that sets its own number, id or dir is refused at registration") {
+    fw::LabInfo info;
+    info.id = "demo";
+    const std::string e =
+        fw::test::thrown([&] { fw::register_lab("98_demo", info, [] { return nullptr; }); });
+    CHECK(contains(e, "lab folder '98_demo'"));
+    CHECK(contains(e, "come from the folder's name"));
+    CHECK_THROWS_AS(fw::find_lab("demo"), fw::UsageError);  // nothing was registered
 }
 
 TEST_CASE("a lab's number and id come from its folder's name") {
