@@ -16,6 +16,20 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A shader file that cannot be read, does not compile, or a program that
+// does not link. `file()` names the file at fault ("shaders/04_geometry/
+// explode.geom"), or for a link error the program ("04_geometry/a.vert +
+// a.frag"). Exit status 1.
+class ShaderError : public Error {
+public:
+    ShaderError(std::string file, const std::string& message)
+        : Error(message), file_(std::move(file)) {}
+    const std::string& file() const { return file_; }
+
+private:
+    std::string file_;
+};
+
 // The user asked for something that does not exist or is out of range: an
 // unknown lab, parameter, enum value or checkpoint, a bad size. Exit status 2.
 class UsageError : public Error {

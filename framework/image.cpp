@@ -77,6 +77,75 @@ void write_png(const std::string& path, const Image& img) {
                     "': check that its directory exists and is writable");
 }
 
+namespace {
+
+void append_bytes(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<size_t>(size));
+}
+
+void check_encodable(const Image& img, const char* format) {
+    if (img.width <= 0 || img.height <= 0 ||
+        img.pixels.size() != static_cast<size_t>(img.width) * img.height)
+        throw Error(std::string("cannot encode a ") + format + " of an image " +
+                    std::to_string(img.width) + "x" + std::to_string(img.height) + " with " +
+                    std::to_string(img.pixels.size()) + " pixels");
+}
+
+}  // namespace
+
+std::string encode_png(const Image& img) {
+    check_encodable(img, "PNG");
+    std::vector<Rgba8> top_first = flip_rows(img.pixels, img.width, img.height);
+    std::string bytes;
+    if (!stbi_write_png_to_func(append_bytes, &bytes, img.width, img.height, 4, top_first.data(),
+                                img.width * 4))
+        throw Error("cannot encode a PNG of " + std::to_string(img.width) + "x" +
+                    std::to_string(img.height) + " pixels");
+    return bytes;
+}
+
+std::string encode_jpeg(const Image& img, int quality) {
+    check_encodable(img, "JPEG");
+    std::vector<Rgba8> top_first = flip_rows(img.pixels, img.width, img.height);
+    std::string bytes;
+    if (!stbi_write_jpg_to_func(append_bytes, &bytes, img.width, img.height, 4, top_first.data(),
+                                std::clamp(quality, 1, 100)))
+        throw Error("cannot encode a JPEG of " + std::to_string(img.width) + "x" +
+                    std::to_string(img.height) + " pixels");
+    return bytes;
+}
+
+Image shrink(const Image& img, int max_side, bool brightest) {
+    const int longest = std::max(img.width, img.height);
+    if (max_side <= 0 || longest <= max_side) return img;
+    const int w = std::max(1, img.width * max_side / longest);
+    const int h = std::max(1, img.height * max_side / longest);
+    Image out(w, h);
+    // Output pixel (x, y) covers source pixels x * width / w up to (x + 1) *
+    // width / w; every source pixel that part of it falls in counts.
+    for (int y = 0; y < h; ++y) {
+        const int y0 = y * img.height / h, y1 = ((y + 1) * img.height + h - 1) / h;
+        for (int x = 0; x < w; ++x) {
+            const int x0 = x * img.width / w, x1 = ((x + 1) * img.width + w - 1) / w;
+            unsigned sum[4] = {0, 0, 0, 0};
+            for (int sy = y0; sy < y1; ++sy)
+                for (int sx = x0; sx < x1; ++sx) {
+                    const Rgba8 p = img.at(sx, sy);
+                    const unsigned v[4] = {p.r, p.g, p.b, p.a};
+                    for (int c = 0; c < 4; ++c)
+                        sum[c] = brightest ? std::max(sum[c], v[c]) : sum[c] + v[c];
+                }
+            const unsigned n = brightest ? 1u : static_cast<unsigned>((y1 - y0) * (x1 - x0));
+            out.at(x, y) = {static_cast<std::uint8_t>((sum[0] + n / 2) / n),
+                            static_cast<std::uint8_t>((sum[1] + n / 2) / n),
+                            static_cast<std::uint8_t>((sum[2] + n / 2) / n),
+                            static_cast<std::uint8_t>((sum[3] + n / 2) / n)};
+        }
+    }
+    return out;
+}
+
 Image read_png(const std::string& path) { return decode_png(read_file(path, "PNG"), path); }
 
 bool png_header_size(const std::string& bytes, int& width, int& height) {
@@ -206,6 +275,7 @@ CompareResult compare_images(const Image& actual, const Image& expected,
     const int w = actual.width, h = actual.height, r = std::max(0, opt.radius);
     res.total_pixels = static_cast<long>(w) * h;
     res.difference = Image(w, h);
+    res.failed.assign(static_cast<size_t>(w) * h, 0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const Rgba8 a = actual.at(x, y);
@@ -218,6 +288,7 @@ CompareResult compare_images(const Image& actual, const Image& expected,
             res.max_channel_error = std::max(res.max_channel_error, best);
             if (best > opt.tolerance) {
                 ++res.failed_pixels;
+                res.failed[static_cast<size_t>(y) * w + x] = 1;
                 res.difference.at(x, y) = heat(best, opt.tolerance);
             } else {
                 // A quarter of the luminance, so the viewer still sees the shape.

@@ -42,6 +42,17 @@ struct DepthImage {
 
 // PNG (RGBA, 8 bits per channel). Throw fw::Error naming the path on failure.
 void write_png(const std::string& path, const Image& img);
+// The PNG file's bytes, in memory.
+std::string encode_png(const Image& img);
+// A baseline JPEG's bytes (quality 1-100; alpha is dropped), for pictures
+// that must stay small.
+std::string encode_jpeg(const Image& img, int quality);
+// `img` made at most `max_side` pixels wide and high, keeping its shape: each
+// pixel the mean of the block it covers, so that a one-pixel line stays
+// visible as a fainter one, or with `brightest` each channel's largest value
+// in the block, so that a single marked pixel (a difference image's) stays as
+// bright. An image already that small is returned as it is.
+Image shrink(const Image& img, int max_side, bool brightest = false);
 Image read_png(const std::string& path);
 // The same from a PNG file's bytes already in memory; `name` is for messages.
 Image decode_png(const std::string& bytes, const std::string& name);
@@ -73,7 +84,8 @@ struct CompareResult {
     double failed_fraction = 0.0;
     int max_channel_error = 0;  // over all pixels, to the nearest neighbour match
     Image difference;           // failed pixels dim red -> yellow by error; passing ones dark grey
-    CompareOptions options;     // the thresholds used, for summary()
+    std::vector<std::uint8_t> failed;  // width * height, bottom row first: 1 where a pixel failed
+    CompareOptions options;            // the thresholds used, for summary()
     int actual_width = 0, actual_height = 0, expected_width = 0, expected_height = 0;
     std::string summary()
         const;  // one line: "12 of 262144 pixels (0.0046%) differ by more than 8/255; limit 0.1%"

@@ -18,7 +18,11 @@ Program& ProgramLibrary::load(const std::vector<std::string>& files) {
     for (const std::string& file : files)
         paths.push_back(
             folder_.empty() || file.find('/') != std::string::npos ? file : folder_ + "/" + file);
-    programs_.push_back(std::make_unique<Program>(Program::from_files(paths)));
+    try {
+        programs_.push_back(std::make_unique<Program>(Program::from_files(paths)));
+    } catch (const ShaderError& e) {
+        programs_.push_back(std::make_unique<Program>(Program::failed(paths, e)));
+    }
     return *programs_.back();
 }
 
@@ -26,12 +30,24 @@ std::vector<std::string> ProgramLibrary::reload_all() {
     std::vector<std::string> errors;
     for (auto& program : programs_) {
         try {
-            Program fresh = Program::from_files(program->files(), program->label());
+            Program fresh = Program::from_files(program->files(),
+                                                program->build_error() ? "" : program->label());
             *program = std::move(fresh);
+        } catch (const ShaderError& e) {
+            // A program that never built stays failed, with the new reason.
+            if (program->build_error()) *program = Program::failed(program->files(), e);
+            errors.push_back(e.what());
         } catch (const Error& e) {
             errors.push_back(e.what());
         }
     }
+    return errors;
+}
+
+std::vector<const ShaderError*> ProgramLibrary::build_errors() const {
+    std::vector<const ShaderError*> errors;
+    for (const auto& program : programs_)
+        if (program->build_error()) errors.push_back(program->build_error());
     return errors;
 }
 

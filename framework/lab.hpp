@@ -25,6 +25,7 @@
 namespace fw {
 
 class Program;
+class ShaderError;
 
 // A lab's description. The lab fills in its title, parameters, controls and
 // functions; registration fills in number, id and dir from the folder name:
@@ -54,12 +55,17 @@ public:
 
     // Compiles and links now: load({"pipeline.vert", "pipeline.frag"}). A name
     // without '/' is in the lab's folder; one with '/' is relative to
-    // shaders/ (or absolute). Throws fw::Error with file, stage, line and
-    // source on failure. The reference stays valid for the library's life.
+    // shaders/ (or absolute). A program that does not build is kept as
+    // failed (Program::failed): whatever draws with it throws the
+    // fw::ShaderError, with file, stage, line and source, and the rest of the
+    // lab still draws. The reference stays valid for the library's life.
     Program& load(const std::vector<std::string>& files);
     // Recompiles every program. Returns one message per program that failed
-    // (those keep drawing with their last good version); empty when all built.
+    // (those keep drawing with their last good version, or stay failed);
+    // empty when all built.
     std::vector<std::string> reload_all();
+    // The programs that have not built, in the order they were loaded.
+    std::vector<const ShaderError*> build_errors() const;
 
 private:
     std::string folder_;

@@ -35,6 +35,8 @@ public:
     RenderOutput render(const ParamValues& params, int width, int height);
 
     Lab& lab() { return *lab_; }
+    // The lab's programs, those that failed to build included.
+    const ProgramLibrary& programs() const { return programs_; }
 
 private:
     const RegisteredLab& registered_;

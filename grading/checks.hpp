@@ -83,6 +83,10 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what);
 bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Image& image,
                    std::string& why, std::string* png_bytes = nullptr);
 
+// "shader error in shaders/04_geometry/explode.geom" when the child reports
+// programs that failed to build (child.json's "shader_errors"); else empty.
+std::string shader_error_status(const ChildOutputs& outputs);
+
 // Every check of every checkpoint, from the child's raw outputs. Images for
 // the report go to out_dir/<lab>/<checkpoint>[.expected|.diff].png.
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,

@@ -228,6 +228,10 @@ int grade_command(const GradeOptions& options) {
         result.log = child.run.log;
         result.seconds = child.run.seconds;
         result.checks = judge_lab(labs[i], plans[i], *child.outputs, options.out);
+        if (child.run.ok()) {
+            const std::string shader_error = shader_error_status(*child.outputs);
+            if (!shader_error.empty()) result.status = shader_error;
+        }
         if (!options.progress) return;
         std::lock_guard<std::mutex> lock(print_mutex);
         print_progress(result);

@@ -1,6 +1,7 @@
 // Judging a lab's checks from what its child wrote. Only raw outputs count:
 // pixels, depth values, stats numbers and unit results; whatever else the
 // child claims (its stats' "params", extra fields, child.json) is ignored.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/checks.hpp"
+#include "grading/image_words.hpp"
 #include "grading/report_text.hpp"
 #include "grading/units/reference.hpp"
 
@@ -164,7 +166,9 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const json& check
         r.difference = lab.id + "/" + cp.name + ".diff.png";
         fw::write_png(out_dir + "/" + r.difference, c.difference);
     }
-    verdict(r, c.passed, expected + "Observed: " + c.summary());
+    std::string where = c.passed ? "" : describe_difference(*image, reference, c);
+    verdict(r, c.passed,
+            expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where));
 }
 
 void judge_probe(const json& check, const RenderPlan& plan, Frame& frame, CheckResult& r) {
@@ -310,6 +314,30 @@ void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, uns
 }
 
 }  // namespace
+
+std::string shader_error_status(const ChildOutputs& outputs) {
+    std::string bytes, why;
+    if (!outputs.read("child.json", 256 * 1024, bytes, why)) return {};
+    const json child = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+    if (!child.is_object() || !child.contains("shader_errors") ||
+        !child["shader_errors"].is_array())
+        return {};
+    // The child's word, used only for this status line: never for a score.
+    std::vector<std::string> files;
+    for (const json& e : child["shader_errors"]) {
+        if (!e.is_object() || !e.contains("file") || !e["file"].is_string()) continue;
+        std::string file = e["file"];
+        if (file.size() > 200) file = file.substr(0, 200) + "...";
+        if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+    }
+    if (files.empty()) return {};
+    const size_t shown = std::min<size_t>(files.size(), 4);
+    std::string text =
+        "shader error in " +
+        fw::join(std::vector<std::string>(files.begin(), files.begin() + shown), ", ");
+    if (files.size() > shown) text += " and " + std::to_string(files.size() - shown) + " more";
+    return text;
+}
 
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    const ChildOutputs& outputs, const std::string& out_dir) {

@@ -2,11 +2,12 @@
 // images as data: URIs, no script, nothing fetched) so that it can be mailed,
 // archived by CI or opened from a Gradescope download as it is.
 //
-// At the top: the total, a table of labs and links to every failed check.
-// Then one section per lab: its score and status (with the child's log when
-// it did not finish normally), its failed checks first, each with its output
-// (thresholds, expected and observed figures) and, for image checks, the
-// rendered, expected and difference images side by side.
+// At the top: the total, a table of labs (a failed lab's status says why:
+// shader error, crash, timeout) and links to every failed checkpoint with
+// its cause. Then one section per lab: its score and status (with the
+// child's log when it did not finish normally), and a card per checkpoint,
+// failed ones first: the rendered, expected and difference images, then its
+// checks, Observed beside Expected.
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "framework/image.hpp"
+#include "grading/by_checkpoint.hpp"
 #include "grading/report_text.hpp"
 
 namespace grading::report {
@@ -61,25 +63,16 @@ figure { margin: 0; flex: 1 1 300px; max-width: 440px; }
 .shot { width: 100%; background: #888 no-repeat center / contain; image-rendering: pixelated;
         border: 1px solid #ccc; }
 figcaption { font-size: 0.85em; color: #555; text-align: center; }
+ table.checks { border-collapse: collapse; width: 100%; margin-top: 0.5em; }
+table.checks th, table.checks td { text-align: left; vertical-align: top; padding: 0.2em 0.5em;
+                                   border-top: 1px solid #e4e4e4; }
+table.checks th { font-weight: 600; font-size: 0.9em; color: #555; }
+table.checks td:nth-child(3), table.checks td:nth-child(4) { width: 38%; }
+table.checks tr.fail td:nth-child(4) pre { background: #fde8e6; }
+pre.note { background: none; padding: 0; color: #555; }
 .missing { padding: 2em 0.5em; border: 1px dashed #c62828; color: #b3261e; font-size: 0.9em;
            text-align: center; word-break: break-all; }
 )";
-
-std::string base64(const std::string& bytes) {
-    static const char alphabet[] =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        const size_t n = std::min<size_t>(3, bytes.size() - i);
-        std::uint32_t group = 0;
-        for (size_t k = 0; k < 3; ++k)
-            group = (group << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-        // n bytes make n + 1 characters; '=' pads the group to four.
-        for (size_t k = 0; k < 4; ++k) out += k <= n ? alphabet[(group >> (18 - 6 * k)) & 63] : '=';
-    }
-    return out;
-}
 
 // The PNG file at `path` as a data: URI; empty, with `why` set, when it
 // cannot be read or is not a PNG.
@@ -155,28 +148,66 @@ private:
     std::string css_;
 };
 
-std::string check_id(size_t lab, size_t check) {
-    return "check-" + std::to_string(lab) + "-" + std::to_string(check);
+std::string card_id(size_t lab, size_t checkpoint) {
+    return "cp-" + std::to_string(lab) + "-" + std::to_string(checkpoint);
 }
 
-std::string check_html(const CheckResult& c, const std::string& id, ImageTable& images) {
-    std::ostringstream h;
+// A check's output in three parts: what comes before "Expected:" (a note
+// such as a unit check's seed), the Expected part and the Observed part
+// (with what follows it). An output without those words is all observed.
+struct OutputParts {
+    std::string note, expected, observed;
+};
+OutputParts split_output(const std::string& output) {
+    const size_t e = output.find("Expected:"), o = output.find("Observed:");
+    if (e == std::string::npos || o == std::string::npos || o < e) return {"", "", output};
+    auto trim = [](std::string t) {
+        while (!t.empty() && (t.back() == '\n' || t.back() == ' ')) t.pop_back();
+        return t;
+    };
+    return {trim(output.substr(0, e)), trim(output.substr(e + 9, o - e - 9)),
+            trim(output.substr(o + 9))};
+}
+
+std::string check_row(const LabResult& lab, const CheckResult& c) {
     const char* state = c.passed ? "pass" : "fail";
+    const OutputParts parts = split_output(check_output(lab, c));
+    std::ostringstream h;
+    h << "<tr class=\"" << state << "\"><td><span class=\"badge " << state << "\">"
+      << (c.passed ? "PASS" : "FAIL") << "</span></td><td>" << escape_markup(c.title)
+      << "<span class=\"tag\">" << escape_markup(c.kind) << "</span><br><small>" << points(c.score)
+      << " / " << points(c.max_score) << " points</small>";
+    if (!parts.note.empty()) h << "<pre class=\"note\">" << escape_markup(parts.note) << "</pre>";
+    h << "</td><td><pre>" << escape_markup(parts.expected) << "</pre></td><td><pre>"
+      << escape_markup(parts.observed) << "</pre></td></tr>\n";
+    return h.str();
+}
+
+// A checkpoint's card: its pictures first, then its checks, failures first,
+// Observed beside Expected.
+std::string card_html(const LabResult& lab, const CheckpointResult& cp, const std::string& id,
+                      ImageTable& images) {
+    std::ostringstream h;
+    const char* state = cp.passed ? "pass" : "fail";
     h << "<article class=\"check " << state << "\" id=\"" << id << "\">\n<h3><span class=\"badge "
-      << state << "\">" << (c.passed ? "PASS" : "FAIL") << "</span>"
-      << escape_markup(c.checkpoint + " / " + c.title) << "<span class=\"tag\">"
-      << escape_markup(c.kind) << "</span>";
-    if (c.visibility == "hidden") h << "<span class=\"tag\">hidden</span>";
-    h << "<span class=\"points\">" << points(c.score) << " / " << points(c.max_score)
+      << state << "\">" << (cp.passed ? "PASS" : "FAIL") << "</span>"
+      << escape_markup(cp.checkpoint);
+    if (cp.visibility == "hidden") h << "<span class=\"tag\">hidden</span>";
+    h << "<span class=\"points\">" << points(cp.score) << " / " << points(cp.max_score)
       << " points</span></h3>\n";
-    if (!c.output.empty()) h << "<pre>" << escape_markup(c.output) << "</pre>\n";
-    if (c.kind == "image")
-        h << "<div class=\"images\">" << images.figure("rendered", c.rendered)
-          << images.figure("expected", c.expected) << images.figure("difference", c.difference)
+    const bool has_image = !cp.expected.empty() || !cp.difference.empty() ||
+                           std::any_of(cp.checks.begin(), cp.checks.end(),
+                                       [](const CheckResult* c) { return c->kind == "image"; });
+    if (has_image)
+        h << "<div class=\"images\">" << images.figure("rendered", cp.rendered)
+          << images.figure("expected", cp.expected) << images.figure("difference", cp.difference)
           << "</div>\n";
-    else if (!c.rendered.empty())  // probes and stats: the frame they were read from
-        h << "<div class=\"images small\">" << images.figure("rendered", c.rendered) << "</div>\n";
-    h << "</article>\n";
+    else if (!cp.rendered.empty())  // probes and stats: the frame they were read from
+        h << "<div class=\"images small\">" << images.figure("rendered", cp.rendered) << "</div>\n";
+    h << "<table class=\"checks\">\n<tr><th></th><th>check</th><th>Expected</th><th>Observed</th>"
+         "</tr>\n";
+    for (const CheckResult* c : cp.checks) h << check_row(lab, *c);
+    h << "</table>\n</article>\n";
     return h.str();
 }
 
@@ -191,14 +222,15 @@ std::string lab_html(const LabResult& lab, size_t index, ImageTable& images) {
     if (!ok)
         h << "<details open><summary>The lab's output (last lines)</summary><pre>"
           << escape_markup(lab.log.empty() ? "(no output)" : lab.log) << "</pre></details>\n";
-    if (lab.checks.empty()) h << "<p>This lab has no checks.</p>\n";
+    const std::vector<CheckpointResult> checkpoints = by_checkpoint(lab);
+    if (checkpoints.empty()) h << "<p>This lab has no checks.</p>\n";
 
-    // Failed checks first; otherwise in the order of the checkpoints file.
-    std::vector<size_t> order(lab.checks.size());
+    // Failed checkpoints first; otherwise in the order of the checkpoints file.
+    std::vector<size_t> order(checkpoints.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_partition(order.begin(), order.end(),
-                          [&](size_t i) { return !lab.checks[i].passed; });
-    for (size_t i : order) h << check_html(lab.checks[i], check_id(index, i), images);
+                          [&](size_t i) { return !checkpoints[i].passed; });
+    for (size_t i : order) h << card_html(lab, checkpoints[i], card_id(index, i), images);
     h << "</section>\n";
     return h.str();
 }
@@ -211,14 +243,14 @@ std::string overview_html(const GradeRun& run) {
     for (size_t li = 0; li < run.labs.size(); ++li) {
         const LabResult& lab = run.labs[li];
         size_t lab_passed = 0;
-        for (size_t ci = 0; ci < lab.checks.size(); ++ci) {
-            const CheckResult& c = lab.checks[ci];
-            lab_passed += c.passed;
-            if (c.passed) continue;
-            const std::string why = first_line(c.output.empty() ? lab.status : c.output);
-            failed += "<li><a href=\"#" + check_id(li, ci) + "\">" +
-                      escape_markup(lab.lab + " / " + c.checkpoint + " / " + c.title) + "</a>" +
-                      (why.empty() ? "" : ": " + escape_markup(why)) + "</li>\n";
+        for (const CheckResult& c : lab.checks) lab_passed += c.passed;
+        const std::vector<CheckpointResult> checkpoints = by_checkpoint(lab);
+        for (size_t ci = 0; ci < checkpoints.size(); ++ci) {
+            const CheckpointResult& cp = checkpoints[ci];
+            if (cp.passed) continue;
+            failed += "<li><a href=\"#" + card_id(li, ci) + "\">" +
+                      escape_markup(lab.lab + " / " + cp.checkpoint) +
+                      "</a>: " + escape_markup(checkpoint_failure(lab, cp)) + "</li>\n";
         }
         total += lab.checks.size();
         passed += lab_passed;
@@ -243,7 +275,7 @@ std::string overview_html(const GradeRun& run) {
          "<th>status</th><th>seconds</th></tr>\n"
       << rows.str() << "</table>\n";
     if (!failed.empty())
-        h << "<h2>Failed checks</h2>\n<ul class=\"failed-list\">\n" << failed << "</ul>\n";
+        h << "<h2>Failed checkpoints</h2>\n<ul class=\"failed-list\">\n" << failed << "</ul>\n";
     return h.str();
 }
 

@@ -18,6 +18,7 @@
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/by_checkpoint.hpp"
 #include "grading/report_text.hpp"
 
 namespace grading {
@@ -95,25 +96,6 @@ size_t check_count(const GradeRun& run) {
     return n;
 }
 
-// What a check reports: its own output and, when the child as a whole failed,
-// why, so that a reader of one test sees the crash that failed it.
-std::string check_output(const LabResult& lab, const CheckResult& check) {
-    std::string text = check.output;
-    if (lab.status != "ok")
-        text += (text.empty() ? "" : "\n") + ("lab " + lab.lab + ": " + lab.status);
-    return text;
-}
-
-// The lab's number, from its id ("03_shading" -> "3"), for Gradescope's ordering.
-std::string lab_number(const LabResult& lab, size_t index) {
-    size_t digits = 0;
-    while (digits < lab.lab.size() && std::isdigit(static_cast<unsigned char>(lab.lab[digits])))
-        ++digits;
-    if (digits == 0) return std::to_string(index);
-    const size_t first = lab.lab.find_first_not_of('0');
-    return first >= digits ? "0" : lab.lab.substr(first, digits - first);
-}
-
 // Gradescope's visibility values are visible, hidden, after_due_date and
 // after_published; a checkpoint is either visible or hidden.
 std::string gradescope_visibility(const LabResult& lab, const CheckResult& check) {
@@ -123,67 +105,157 @@ std::string gradescope_visibility(const LabResult& lab, const CheckResult& check
                     "\"; a checkpoint's visibility is visible or hidden");
 }
 
-std::string results_json(const GradeRun& run) {
+// results.json stays under 1 MB (PrairieLearn's limit, and a page a browser
+// shows quickly): its text first, whatever it takes, then pictures in what
+// is left of this size, checkpoint by checkpoint in order.
+constexpr size_t kResultsSize = 900 * 1024;
+
+std::string html_pre(const std::string& text) { return "<pre>" + escape_markup(text) + "</pre>"; }
+
+// A checkpoint's output on Gradescope (html): its pictures when it failed,
+// then each check, failures first, with Expected and Observed.
+std::string checkpoint_html(const LabResult& lab, const CheckpointResult& cp,
+                            Thumbnails& thumbnails) {
+    std::string h;
+    if (lab.status != "ok")
+        h +=
+            "<p><strong>" + escape_markup("lab " + lab.lab + ": " + lab.status) + "</strong></p>\n";
+    bool left_out = false;
+    const std::vector<Thumbnails::Picture> pictures = thumbnails.for_checkpoint(cp, &left_out);
+    if (!pictures.empty()) {
+        h += "<table><tr>";
+        for (const Thumbnails::Picture& p : pictures)
+            h += "<td><img src=\"" + p.uri + "\" alt=\"" + p.label + "\" title=\"" + p.label +
+                 "\"></td>";
+        h += "</tr><tr>";
+        for (const Thumbnails::Picture& p : pictures) h += "<td>" + p.label + "</td>";
+        h += "</tr></table>\n";
+    } else if (left_out) {
+        h += "<p>(No pictures here: results.json stays under 1 MB, and earlier checkpoints "
+             "took its room for pictures. index.html, from course grade, shows them all.)</p>\n";
+    }
+    for (const CheckResult* c : cp.checks) {
+        h += "<p><strong>" + std::string(c->passed ? "PASS" : "FAIL") + "</strong> " +
+             escape_markup(c->title) + " (" + points(c->score) + " / " + points(c->max_score) +
+             " points)</p>\n";
+        if (!c->output.empty()) h += html_pre(c->output) + "\n";
+    }
+    return h;
+}
+
+// The top-level output: the per-lab table, and why a lab did not finish.
+std::string overview_html(const GradeRun& run) {
+    size_t total = check_count(run), passed = 0;
+    std::string rows;
+    for (const LabResult& lab : run.labs) {
+        passed += passed_count(lab);
+        rows += "<tr><td>" + escape_markup(lab.lab) + "</td><td>" + points(lab.score()) + " / " +
+                points(lab.max_score()) + "</td><td>" + std::to_string(passed_count(lab)) + " / " +
+                std::to_string(lab.checks.size()) + "</td><td>" +
+                escape_markup(first_line(lab.status)) + "</td></tr>\n";
+    }
+    std::string h = "<p><strong>" + points(run.score()) + " / " + points(run.max_score()) +
+                    " points</strong>; " + std::to_string(passed) + " of " + std::to_string(total) +
+                    " checks passed.</p>\n";
+    if (!run.labs.empty())
+        h += "<table><tr><th>lab</th><th>score</th><th>checks passed</th><th>status</th></tr>\n" +
+             rows + "</table>\n";
+    for (const LabResult& lab : run.labs)
+        if (lab.status != "ok")
+            h += "<p><strong>" + escape_markup(lab.lab + ": " + lab.status) + "</strong></p>\n" +
+                 html_pre(lab.log.empty() ? "(no output)" : lab.log) + "\n";
+    return h;
+}
+
+std::string results_json(const GradeRun& run, const std::string& out_dir, size_t picture_budget) {
     nlohmann::ordered_json tests = nlohmann::ordered_json::array();
-    std::string problems;
+    Thumbnails thumbnails(out_dir, picture_budget);
+    nlohmann::ordered_json labs = nlohmann::ordered_json::array();
     for (size_t li = 0; li < run.labs.size(); ++li) {
         const LabResult& lab = run.labs[li];
-        for (size_t ci = 0; ci < lab.checks.size(); ++ci) {
-            const CheckResult& c = lab.checks[ci];
+        const std::vector<CheckpointResult> checkpoints = by_checkpoint(lab);
+        for (size_t ci = 0; ci < checkpoints.size(); ++ci) {
+            const CheckpointResult& cp = checkpoints[ci];
+            nlohmann::ordered_json checks = nlohmann::ordered_json::array();
+            for (const CheckResult* c : cp.checks)
+                checks.push_back({{"title", clean_text(c->title)},
+                                  {"kind", c->kind},
+                                  {"passed", c->passed},
+                                  {"score", c->score},
+                                  {"max_score", c->max_score}});
             nlohmann::ordered_json test;
-            test["name"] = clean_text(lab.lab + " / " + c.checkpoint + " / " + c.title);
+            test["name"] = clean_text(lab.lab + " / " + cp.checkpoint);
             test["number"] = lab_number(lab, li) + "." + std::to_string(ci + 1);
-            test["score"] = c.score;
-            test["max_score"] = c.max_score;
-            test["status"] = c.passed ? "passed" : "failed";
-            test["output"] = clean_text(check_output(lab, c));
-            test["visibility"] = gradescope_visibility(lab, c);
+            test["score"] = cp.score;
+            test["max_score"] = cp.max_score;
+            test["status"] = cp.passed ? "passed" : "failed";
+            test["output"] = checkpoint_html(lab, cp, thumbnails);
+            test["output_format"] = "html";
+            test["visibility"] = gradescope_visibility(lab, *cp.checks.front());
+            test["extra_data"] = {{"lab", clean_text(lab.lab)},
+                                  {"checkpoint", clean_text(cp.checkpoint)},
+                                  {"checks", checks}};
             tests.push_back(test);
         }
-        if (lab.status != "ok") problems += "\n" + lab.lab + ": " + lab.status + "\n" + lab.log;
+        labs.push_back({{"lab", clean_text(lab.lab)},
+                        {"status", clean_text(lab.status)},
+                        {"score", lab.score()},
+                        {"max_score", lab.max_score()},
+                        {"seconds", std::round(lab.seconds * 1000.0) / 1000.0}});
     }
-    size_t total = check_count(run), passed = 0;
-    for (const LabResult& lab : run.labs) passed += passed_count(lab);
-
     nlohmann::ordered_json results;
     results["score"] = run.score();
     results["max_score"] = run.max_score();
     results["execution_time"] = std::round(run.seconds * 1000.0) / 1000.0;
-    results["output"] = clean_text(points(run.score()) + "/" + points(run.max_score()) +
-                                   " points; " + std::to_string(passed) + " of " +
-                                   std::to_string(total) + " checks passed.\n" + problems);
+    results["output"] = overview_html(run);
+    results["output_format"] = "html";
+    results["extra_data"] = {{"backend", clean_text(run.backend)}, {"labs", labs}};
     results["tests"] = tests;
     return results.dump(2) + "\n";
 }
 
+std::string results_json(const GradeRun& run, const std::string& out_dir) {
+    const size_t text = results_json(run, out_dir, 0).size();
+    return results_json(run, out_dir, kResultsSize > text ? kResultsSize - text : 0);
+}
+
+// One <testcase> per checkpoint (classname the lab, name the checkpoint),
+// its checks' text inside, failures first.
 std::string junit_xml(const GradeRun& run) {
-    size_t failures = check_count(run);
-    for (const LabResult& lab : run.labs) failures -= passed_count(lab);
+    size_t cases = 0, failures = 0;
+    std::vector<std::vector<CheckpointResult>> labs;
+    for (const LabResult& lab : run.labs) {
+        labs.push_back(by_checkpoint(lab));
+        cases += labs.back().size();
+        for (const CheckpointResult& cp : labs.back()) failures += cp.passed ? 0 : 1;
+    }
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<testsuites name=\"course grade\" tests=\"" << check_count(run) << "\" failures=\""
-      << failures << "\" time=\"" << fixed(run.seconds, 3) << "\">\n";
-    for (const LabResult& lab : run.labs) {
+      << "<testsuites name=\"course grade\" tests=\"" << cases << "\" failures=\"" << failures
+      << "\" time=\"" << fixed(run.seconds, 3) << "\">\n";
+    for (size_t li = 0; li < run.labs.size(); ++li) {
+        const LabResult& lab = run.labs[li];
         const std::string suite = escape_markup(lab.lab);
-        x << "  <testsuite name=\"" << suite << "\" tests=\"" << lab.checks.size()
-          << "\" failures=\"" << lab.checks.size() - passed_count(lab)
-          << "\" errors=\"0\" skipped=\"0\" time=\"" << fixed(lab.seconds, 3) << "\">\n";
-        for (const CheckResult& c : lab.checks) {
+        size_t lab_failures = 0;
+        for (const CheckpointResult& cp : labs[li]) lab_failures += cp.passed ? 0 : 1;
+        x << "  <testsuite name=\"" << suite << "\" tests=\"" << labs[li].size() << "\" failures=\""
+          << lab_failures << "\" errors=\"0\" skipped=\"0\" time=\"" << fixed(lab.seconds, 3)
+          << "\">\n";
+        for (const CheckpointResult& cp : labs[li]) {
             x << "    <testcase classname=\"" << suite << "\" name=\""
-              << escape_markup(c.checkpoint + " / " + c.title) << "\"";
-            const std::string output = check_output(lab, c);
-            if (c.passed && output.empty()) {
-                x << "/>\n";
-                continue;
-            }
-            x << ">\n";
-            if (c.passed) {
-                x << "      <system-out>" << escape_markup(output) << "</system-out>\n";
+              << escape_markup(cp.checkpoint) << "\">\n";
+            const std::string text = checkpoint_text(lab, cp);
+            if (cp.passed) {
+                x << "      <system-out>" << escape_markup(text) << "</system-out>\n";
             } else {
-                std::string message = first_line(output);
+                const std::string message = checkpoint_failure(lab, cp);
+                std::string kinds;
+                for (const CheckResult* c : cp.checks)
+                    if (!c->passed && kinds.find(c->kind) == std::string::npos)
+                        kinds += (kinds.empty() ? "" : " ") + c->kind;
                 x << "      <failure message=\""
-                  << escape_markup(message.empty() ? "check failed" : message) << "\" type=\""
-                  << escape_markup(c.kind) << "\">" << escape_markup(output) << "</failure>\n";
+                  << escape_markup(message.empty() ? "checkpoint failed" : message) << "\" type=\""
+                  << escape_markup(kinds) << "\">" << escape_markup(text) << "</failure>\n";
             }
             x << "    </testcase>\n";
         }
@@ -317,11 +389,8 @@ std::string summary_table(const GradeRun& run) {
         for (const CheckResult& c : lab.checks) {
             if (c.passed) continue;
             // The Observed line says what went wrong; the Expected line only
-            // repeats the check. Outputs without one start with the reason.
-            const std::string output = report::check_output(lab, c);
-            const size_t observed = output.find("Observed:");
-            const std::string why = report::first_line(
-                observed == std::string::npos ? output : output.substr(observed));
+            // repeats the check.
+            const std::string why = check_failure(lab, c);
             failed += "  " +
                       ascii(lab.lab + "/" + c.checkpoint + ": " + c.title +
                             (why.empty() ? "" : " - " + why)) +
@@ -346,7 +415,8 @@ void write_reports(const GradeRun& run, const std::string& out_dir) {
         throw fw::Error("cannot create the report directory " + out_dir + ": " + error.message() +
                         "; pick another --out");
     report::write_text_file(report::in_dir(out_dir, "summary.txt"), summary_table(run));
-    report::write_text_file(report::in_dir(out_dir, "results.json"), report::results_json(run));
+    report::write_text_file(report::in_dir(out_dir, "results.json"),
+                            report::results_json(run, out_dir));
     report::write_text_file(report::in_dir(out_dir, "junit.xml"), report::junit_xml(run));
     report::write_text_file(report::in_dir(out_dir, "index.html"),
                             report::html_report(run, out_dir));

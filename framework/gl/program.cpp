@@ -96,13 +96,23 @@ Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
         if (log_length > 0) glGetProgramInfoLog(id, log_length, nullptr, log.data());
         while (!log.empty() && log.back() == '\0') log.pop_back();
         take_debug_messages();  // as for compile errors: the exception carries it
-        throw Error("program '" + p.label_ + "' failed to link (files: " + p.files_text() + "):\n" +
-                    indented(log));
+        throw ShaderError(p.label_, "program '" + p.label_ + "' failed to link (files: " +
+                                        p.files_text() + "):\n" + indented(log));
     }
     set_object_label(GL_PROGRAM, id, p.label_);
     p.load_uniforms();
     return p;
 }
+
+Program Program::failed(std::vector<std::string> files, const ShaderError& error) {
+    Program p;
+    p.files_ = std::move(files);
+    p.label_ = joined_names(p.files_);
+    p.error_ = std::make_shared<ShaderError>(error);
+    return p;
+}
+
+void Program::throw_build_error() const { throw *error_; }
 
 void Program::use() const { glUseProgram(id()); }
 

@@ -15,11 +15,13 @@
 
 #include <glm/glm.hpp>
 #include <map>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "framework/error.hpp"
 #include "framework/gl/handle.hpp"
 #include "framework/gl/shader.hpp"
 
@@ -48,7 +50,17 @@ public:
     static Program from_files(const std::vector<std::string>& files, std::string label = {});
     static Program from_shaders(std::vector<Shader> shaders, std::string label = {});
 
-    GLuint id() const { return handle_.get(); }
+    // A program that failed to build, kept so that only what draws with it
+    // fails: id(), use() and every set() throw `error` again. ProgramLibrary
+    // keeps such programs until a reload builds them.
+    static Program failed(std::vector<std::string> files, const ShaderError& error);
+    // Null when the program built; else why it did not.
+    const ShaderError* build_error() const { return error_.get(); }
+
+    GLuint id() const {
+        if (error_) throw_build_error();
+        return handle_.get();
+    }
     // glUseProgram(id()).
     void use() const;
     const std::vector<std::string>& files() const { return files_; }
@@ -122,6 +134,7 @@ private:
     std::string file_declaring(const std::string& name) const;
     std::string files_text() const;
     void load_uniforms();
+    [[noreturn]] void throw_build_error() const;
 
     detail::Handle handle_;
     std::vector<std::string> files_;
@@ -131,6 +144,7 @@ private:
     std::unordered_map<std::string, UniformInfo> uniforms_;
     // (file, source) of each stage, to tell "optimised out" from "misspelt".
     std::vector<std::pair<std::string, std::string>> sources_;
+    std::shared_ptr<const ShaderError> error_;
 };
 
 }  // namespace fw

@@ -161,16 +161,20 @@ std::string expand_includes(const std::string& text, const std::string& path,
         }
         const std::string where = display_path(path) + ":" + std::to_string(number) + ": ";
         if (!std::regex_search(line, m, include))
-            throw Error(where +
-                        "expected #include \"name\" naming a file in the same folder: " + line);
+            throw ShaderError(
+                display_path(path),
+                where + "expected #include \"name\" naming a file in the same folder: " + line);
         const std::string file = (folder / m[1].str()).string();
         std::ifstream in(file, std::ios::binary);
         std::ostringstream content;
         if (!std::filesystem::is_regular_file(file) || !(content << in.rdbuf()))
-            throw Error(where + "cannot read included file '" + file + "'");
+            throw ShaderError(display_path(path),
+                              where + "cannot read included file '" + file + "'");
         for (const std::string& inner : split_lines(content.str()))
             if (std::regex_search(inner, any_include))
-                throw Error(display_path(file) + ": an included file may not include another");
+                throw ShaderError(
+                    display_path(file),
+                    display_path(file) + ": an included file may not include another");
         included.push_back({display_path(file), content.str()});
         const std::size_t k = included.size();
         out += "#line " + std::to_string(k * kIncludedLineBase + 1) + " " + std::to_string(k) +
@@ -186,10 +190,12 @@ Shader Shader::from_file(const std::string& path) {
     std::ostringstream text;
     if (std::filesystem::is_regular_file(resolved) && in) text << in.rdbuf();
     if (!std::filesystem::is_regular_file(resolved) || !in || in.bad())
-        throw Error("cannot read shader file '" + resolved + "'" +
-                    (resolved == path ? std::string()
-                                      : " ('" + path + "' in the shader directory " + shader_dir() +
-                                            "; LAB_SHADER_DIR overrides it)"));
+        throw ShaderError(
+            display_path(resolved),
+            "cannot read shader file '" + resolved + "'" +
+                (resolved == path ? std::string()
+                                  : " ('" + path + "' in the shader directory " + shader_dir() +
+                                        "; LAB_SHADER_DIR overrides it)"));
     std::vector<IncludedFile> included;
     const std::string source = expand_includes(text.str(), resolved, included);
     Shader shader = compile(stage, source, display_path(resolved), text.str(), included);
@@ -225,7 +231,7 @@ Shader Shader::compile(Stage stage, const std::string& source, const std::string
         // Mesa also reports the failure through KHR_debug; the exception
         // carries it, so the queued copy must not resurface at the next check.
         take_debug_messages();
-        throw Error(format_compile_error(name, stage, log, file_text, included));
+        throw ShaderError(name, format_compile_error(name, stage, log, file_text, included));
     }
     set_object_label(GL_SHADER, id, name);
     return shader;

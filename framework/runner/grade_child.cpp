@@ -94,8 +94,16 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
             std::ofstream(base + ".error.txt") << e.what() << "\n";
         }
     }
-    write_json(out_dir + "/child.json",
-               {{"complete", true}, {"context", context_json}, {"init_error", init_error}});
+    // Programs that failed to build: the renders that drew with them failed
+    // with the compiler's message; course names the files in the lab's status.
+    json shader_errors = json::array();
+    if (renderer)
+        for (const ShaderError* e : renderer->programs().build_errors())
+            shader_errors.push_back({{"file", e->file()}, {"message", e->what()}});
+    write_json(out_dir + "/child.json", {{"complete", true},
+                                         {"context", context_json},
+                                         {"init_error", init_error},
+                                         {"shader_errors", shader_errors}});
 }
 
 }  // namespace fw

@@ -178,10 +178,12 @@ public:
         const glm::mat4 view_projection =
             glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar) *
             glm::lookAt(kEye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-        for (fw::Program* program : {passthrough_, duplicate_, explode_, normals_, wireframe_}) {
-            program->set(kModelUniform, model);
-            program->set(kViewProjectionUniform, view_projection);
-        }
+        // Only the programs this frame draws with: one that failed to build
+        // costs only the modes that use it.
+        const auto set_transforms = [&](const fw::Program& program) {
+            program.set(kModelUniform, model);
+            program.set(kViewProjectionUniform, view_projection);
+        };
 
         // The uniforms that only the student parts read are set with
         // set_if_active(): the compiler removes them until that part is written.
@@ -212,6 +214,7 @@ public:
                 shaded->set(kEdgeColorUniform, kWhite);
                 break;
         }
+        set_transforms(*shaded);
         shaded->set(kColorUniform, kGrey);
         shaded->set(kLightDirUniform, kLightDir);
 
@@ -226,6 +229,7 @@ public:
         if (mode == Mode::Normals) {
             // The same triangles again (the vertex array is still bound),
             // through the geometry shader that turns each into three lines.
+            set_transforms(*normals_);
             normals_->set(kColorUniform, kYellow);
             normals_->set_if_active(kLengthUniform, p.number("length"));
             normals_->use();

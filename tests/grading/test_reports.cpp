@@ -10,7 +10,10 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <string>
+#include <vector>
 
+#include "framework/image.hpp"
 #include "grading/report_text.hpp"
 #include "grading/reports.hpp"
 #include "tests/support/test_support.hpp"
@@ -120,7 +123,18 @@ struct Fixture {
 
 }  // namespace
 
-TEST_CASE("results.json follows Gradescope's format") {
+// The <img> data URIs of a Gradescope html output, decoded.
+std::vector<std::string> inline_pngs(const std::string& html) {
+    const std::string uri = "<img src=\"data:image/png;base64,";
+    std::vector<std::string> out;
+    for (size_t at = html.find(uri); at != std::string::npos; at = html.find(uri, at + 1)) {
+        const size_t begin = at + uri.size();
+        out.push_back(base64_decode(html.substr(begin, html.find('"', begin) - begin)));
+    }
+    return out;
+}
+
+TEST_CASE("results.json follows Gradescope's format: one test per checkpoint") {
     Fixture f;
     const auto j = nlohmann::json::parse(read_text(f.dir + "/results.json"));
     INFO(j.dump(2));
@@ -128,9 +142,10 @@ TEST_CASE("results.json follows Gradescope's format") {
     CHECK(j.at("max_score").get<double>() == doctest::Approx(16.0));
     CHECK(j.at("execution_time").get<double>() == doctest::Approx(1.76));
     CHECK(j.at("output").is_string());
+    CHECK(j.at("output_format") == "html");
 
     const auto& tests = j.at("tests");
-    REQUIRE(tests.size() == 5);
+    REQUIRE(tests.size() == 3);
     double score = 0, max_score = 0;
     const std::set<std::string> visibilities{"visible", "hidden", "after_due_date",
                                              "after_published"};
@@ -138,51 +153,119 @@ TEST_CASE("results.json follows Gradescope's format") {
         CHECK(t.at("name").is_string());
         CHECK(t.at("number").is_string());
         CHECK(t.at("output").is_string());
+        CHECK(t.at("output_format") == "html");
         CHECK(visibilities.count(t.at("visibility").get<std::string>()) == 1);
         const std::string status = t.at("status").get<std::string>();
         CHECK((status == "passed" || status == "failed"));
         CHECK(t.at("score").get<double>() <= t.at("max_score").get<double>());
+        CHECK(t.at("extra_data").at("checks").is_array());
         score += t.at("score").get<double>();
         max_score += t.at("max_score").get<double>();
     }
     CHECK(score == doctest::Approx(7.0));
     CHECK(max_score == doctest::Approx(16.0));
 
-    CHECK(tests[1].at("name") == "00_pipeline / triangle / probe (8, 8) colour");
-    CHECK(tests[1].at("status") == "failed");
-    CHECK(tests[1].at("number") == "0.2");
-    const std::string probe = tests[1].at("output");
-    CHECK(probe.find("< observed & \"quoted\" 'single' red \xEF\xBF\xBD\n") != std::string::npos);
-    CHECK(tests[0].at("visibility") == "visible");
-    CHECK(tests[2].at("visibility") == "hidden");
-    CHECK(tests[2].at("status") == "passed");
-    for (int i : {3, 4}) {
-        CHECK(tests[i].at("status") == "failed");
-        CHECK(tests[i].at("output").get<std::string>().find(kCrash) != std::string::npos);
+    // The checkpoint holds its checks, the failed probe before the passed image.
+    const auto& triangle = tests[0];
+    CHECK(triangle.at("name") == "00_pipeline / triangle");
+    CHECK(triangle.at("number") == "0.1");
+    CHECK(triangle.at("status") == "failed");
+    CHECK(triangle.at("score") == 4);
+    CHECK(triangle.at("max_score") == 6);
+    CHECK(triangle.at("visibility") == "visible");
+    CHECK(triangle.at("extra_data").at("checks").size() == 2);
+    CHECK(triangle.at("extra_data").at("checks")[0].at("title") == "probe (8, 8) colour");
+    const std::string html = triangle.at("output");
+    CHECK(html.find("probe (8, 8) colour") < html.find("image vs reference"));
+    // The child's text is escaped: its markup cannot reach the page.
+    CHECK(html.find("< observed") == std::string::npos);
+    CHECK(html.find("&lt; observed &amp; &quot;quoted&quot; &#39;single&#39; red \xEF\xBF\xBD\n") !=
+          std::string::npos);
+    // A failed checkpoint shows its frame and the reference, small; the
+    // difference only when its image check failed (here it passed).
+    const std::vector<std::string> pictures = inline_pngs(html);
+    REQUIRE(pictures.size() == 2);
+    for (const std::string& png : pictures) {
+        int w = 0, h = 0;
+        CHECK(fw::png_header_size(png, w, h));
+        CHECK(w == 4);  // already smaller than the thumbnail size: kept as it is
+        CHECK(h == 3);
     }
-    CHECK(j.at("output").get<std::string>().find(kCrash) != std::string::npos);
+    CHECK(fw::decode_png(pictures[0], "rendered").pixels ==
+          fw::read_png(f.dir + "/" + f.pngs[0]).pixels);
+    CHECK(fw::decode_png(pictures[1], "expected").pixels ==
+          fw::read_png(f.dir + "/" + f.pngs[1]).pixels);
+
+    CHECK(tests[1].at("name") == "00_pipeline / secret");
+    CHECK(tests[1].at("visibility") == "hidden");
+    CHECK(tests[1].at("status") == "passed");
+    CHECK(inline_pngs(tests[1].at("output")).empty());
+    CHECK(tests[2].at("name") == "01_transforms / rotate");
+    CHECK(tests[2].at("number") == "1.1");
+    CHECK(tests[2].at("status") == "failed");
+    CHECK(tests[2].at("output").get<std::string>().find(kCrash) != std::string::npos);
+    // The overall output: the table of labs, with the crash and its log.
+    const std::string overall = j.at("output");
+    CHECK(overall.find("<table>") != std::string::npos);
+    CHECK(overall.find("<td>00_pipeline</td><td>7 / 9</td><td>2 / 3</td><td>ok</td>") !=
+          std::string::npos);
+    CHECK(overall.find(kCrash) != std::string::npos);
+    CHECK(overall.find("Segmentation fault &lt;core dumped&gt;") != std::string::npos);
+    CHECK(j.at("extra_data").at("labs").size() == 2);
 }
 
-TEST_CASE("junit.xml counts every check and escapes what the checks printed") {
+TEST_CASE("results.json's pictures: shrunk to 160 pixels, the difference kept bright") {
+    const std::string dir = fw::test::out_dir() + "/thumbs";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir + "/lab");
+    fw::Image frame(512, 256, {0, 0, 0, 255}), diff(512, 256, {20, 20, 20, 255});
+    diff.at(300, 100) = {255, 0, 0, 255};  // one failed pixel
+    fw::write_png(dir + "/lab/cp.png", frame);
+    fw::write_png(dir + "/lab/cp.expected.png", frame);
+    fw::write_png(dir + "/lab/cp.diff.png", diff);
+    GradeRun run;
+    run.labs.resize(1);
+    run.labs[0].lab = "lab";
+    CheckResult image = check("lab", "cp", "image", "image vs reference", 0, 1, false, "differs");
+    image.rendered = "lab/cp.png", image.expected = "lab/cp.expected.png";
+    image.difference = "lab/cp.diff.png";
+    run.labs[0].checks.push_back(image);
+    grading::write_reports(run, dir);
+    const auto j = nlohmann::json::parse(read_text(dir + "/results.json"));
+    const std::vector<std::string> pictures = inline_pngs(j["tests"][0]["output"]);
+    REQUIRE(pictures.size() == 3);
+    const fw::Image small = fw::decode_png(pictures[2], "difference");
+    CHECK(small.width == 160);
+    CHECK(small.height == 80);
+    // The one red pixel survives the shrinking as a red one (300 * 160 / 512 =
+    // 93.75), each channel the largest of its block: red over the dark grey.
+    CHECK(small.at(93, 31) == fw::Rgba8{255, 20, 20, 255});
+    CHECK(small.at(10, 10) == fw::Rgba8{20, 20, 20, 255});
+    CHECK(fw::decode_png(pictures[0], "rendered").width == 160);
+}
+
+TEST_CASE("junit.xml has a test case per checkpoint and escapes what the checks printed") {
     Fixture f;
     const std::string xml = read_text(f.dir + "/junit.xml");
     INFO(xml);
     CHECK(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites ", 0) == 0);
     CHECK(count(xml, "<testsuite ") == 2);
-    CHECK(count(xml, "<testcase ") == 5);
-    CHECK(count(xml, "<failure ") == 3);
-    CHECK(xml.find("tests=\"5\" failures=\"3\"") != std::string::npos);
-    CHECK(xml.find("name=\"00_pipeline\" tests=\"3\" failures=\"1\"") != std::string::npos);
-    CHECK(xml.find("name=\"01_transforms\" tests=\"2\" failures=\"2\"") != std::string::npos);
-    CHECK(xml.find("classname=\"00_pipeline\" name=\"triangle / probe (8, 8) colour\"") !=
-          std::string::npos);
+    CHECK(count(xml, "<testcase ") == 3);
+    CHECK(count(xml, "<failure ") == 2);
+    CHECK(xml.find("tests=\"3\" failures=\"2\"") != std::string::npos);
+    CHECK(xml.find("name=\"00_pipeline\" tests=\"2\" failures=\"1\"") != std::string::npos);
+    CHECK(xml.find("name=\"01_transforms\" tests=\"1\" failures=\"1\"") != std::string::npos);
+    CHECK(xml.find("classname=\"00_pipeline\" name=\"triangle\"") != std::string::npos);
 
     // The output's markup arrives as text, in the message attribute and the body.
     CHECK(xml.find("< observed") == std::string::npos);
     CHECK(xml.find("<core") == std::string::npos);
-    CHECK(xml.find("message=\"Expected (1, 0, 0) &lt; observed &amp; &quot;quoted&quot; "
-                   "&#39;single&#39;") != std::string::npos);
+    CHECK(xml.find("message=\"probe (8, 8) colour: Expected (1, 0, 0) &lt; observed &amp; "
+                   "&quot;quoted&quot; &#39;single&#39;") != std::string::npos);
     CHECK(xml.find("unit rotate(v, &lt;angle&gt;)") != std::string::npos);
+    // Within a checkpoint the failed check comes first.
+    const std::string triangle = xml.substr(xml.find("name=\"triangle\""));
+    CHECK(triangle.find("FAIL  probe (8, 8) colour") < triangle.find("PASS  image vs reference"));
     // Characters XML 1.0 forbids are gone, and the file is UTF-8.
     CHECK(xml.find('\x01') == std::string::npos);
     CHECK(xml.find('\x1b') == std::string::npos);
@@ -197,7 +280,7 @@ TEST_CASE("junit.xml counts every check and escapes what the checks printed") {
     CHECK(xml.find("Segmentation fault &lt;core dumped&gt; &amp; more") != std::string::npos);
 }
 
-TEST_CASE("index.html is self-contained and shows each check with its images") {
+TEST_CASE("index.html is self-contained: a card per checkpoint, images first, then its checks") {
     Fixture f;
     const std::string html = read_text(f.dir + "/index.html");
     const std::string uri = "data:image/png;base64,";
@@ -213,15 +296,20 @@ TEST_CASE("index.html is self-contained and shows each check with its images") {
          at = html.find("href=\"", at + 1))
         CHECK_MESSAGE(html[at + 6] == '#', "a link out of the page: " << html.substr(at, 40));
 
-    for (const char* title : {"triangle / image vs reference", "triangle / probe (8, 8) colour",
-                              "secret / unit rotate(v, &lt;angle&gt;)",
-                              "rotate / primitives_generated == 2", "rotate / image vs reference"})
+    for (const char* title : {"image vs reference", "probe (8, 8) colour",
+                              "unit rotate(v, &lt;angle&gt;)", "primitives_generated == 2"})
         CHECK_MESSAGE(html.find(title) != std::string::npos, "missing check " << title);
+    CHECK(count(html, "<article class=\"check ") == 3);
     CHECK(html.find("< observed") == std::string::npos);
     CHECK(html.find("&lt; observed &amp; &quot;quoted&quot;") != std::string::npos);
     CHECK(html.find("image not available: 01_transforms/rotate.png") != std::string::npos);
     CHECK(html.find(kCrash) != std::string::npos);
     CHECK(html.find("Segmentation fault &lt;core dumped&gt;") != std::string::npos);
+    // The failed list at the top gives each failed checkpoint's cause.
+    CHECK(html.find("00_pipeline / triangle</a>: probe (8, 8) colour: Expected (1, 0, 0) &lt; "
+                    "observed") != std::string::npos);
+    CHECK(html.find("01_transforms / rotate</a>: image vs reference: the lab wrote no image") !=
+          std::string::npos);
 
     // Each embedded image decodes to the bytes of one of the check's PNG files.
     std::set<std::string> files;
@@ -233,9 +321,13 @@ TEST_CASE("index.html is self-contained and shows each check with its images") {
     }
     CHECK(decoded == files);
 
-    // Within a lab, failed checks come first.
+    // Within a lab, failed checkpoints come first; in a card, the images come
+    // before the checks, and the failed check before the passed one.
     const std::string lab0 = html.substr(html.find("id=\"lab-0\""));
-    CHECK(lab0.find("probe (8, 8) colour") < lab0.find("image vs reference"));
+    const std::string card = lab0.substr(lab0.find("<article"));
+    CHECK(card.find("triangle") < card.find("secret"));
+    CHECK(card.find("<figure>") < card.find("<table class=\"checks\">"));
+    CHECK(card.find("probe (8, 8) colour") < card.find("image vs reference"));
 }
 
 TEST_CASE("summary.txt has an aligned row per lab, the failed checks and the total") {

@@ -1,0 +1,158 @@
+#include "grading/by_checkpoint.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+
+#include "framework/error.hpp"
+#include "framework/image.hpp"
+#include "grading/report_text.hpp"
+
+namespace grading {
+
+std::vector<CheckpointResult> by_checkpoint(const LabResult& lab) {
+    std::vector<CheckpointResult> out;
+    for (const CheckResult& c : lab.checks) {
+        auto found = std::find_if(out.begin(), out.end(), [&](const CheckpointResult& cp) {
+            return cp.checkpoint == c.checkpoint;
+        });
+        if (found == out.end()) {
+            out.push_back({});
+            found = out.end() - 1;
+            found->checkpoint = c.checkpoint;
+            found->visibility = c.visibility;
+        }
+        CheckpointResult& cp = *found;
+        cp.checks.push_back(&c);
+        cp.score += c.score;
+        cp.max_score += c.max_score;
+        cp.passed = cp.passed && c.passed;
+        // A hidden check makes its checkpoint hidden (they share one in practice).
+        if (c.visibility != "visible") cp.visibility = c.visibility;
+        if (cp.rendered.empty()) cp.rendered = c.rendered;
+        if (c.kind == "image") {
+            cp.image_failed = cp.image_failed || !c.passed;
+            if (cp.expected.empty()) cp.expected = c.expected;
+            if (cp.difference.empty() || !c.passed) cp.difference = c.difference;
+        }
+    }
+    for (CheckpointResult& cp : out)
+        std::stable_partition(cp.checks.begin(), cp.checks.end(),
+                              [](const CheckResult* c) { return !c->passed; });
+    return out;
+}
+
+std::string check_output(const LabResult& lab, const CheckResult& check) {
+    std::string text = check.output;
+    if (lab.status != "ok" && !check.passed)
+        text += (text.empty() ? "" : "\n") + ("lab " + lab.lab + ": " + lab.status);
+    return text;
+}
+
+std::string checkpoint_text(const LabResult& lab, const CheckpointResult& cp) {
+    std::string text;
+    for (const CheckResult* c : cp.checks) {
+        text += std::string(c->passed ? "PASS" : "FAIL") + "  " + c->title + " (" +
+                report::points(c->score) + "/" + report::points(c->max_score) + " points)\n";
+        const std::string output = check_output(lab, *c);
+        size_t start = 0;
+        while (start < output.size()) {
+            const size_t end = std::min(output.find('\n', start), output.size());
+            text += "    " + output.substr(start, end - start) + "\n";
+            start = end + 1;
+        }
+    }
+    return text;
+}
+
+std::string check_failure(const LabResult& lab, const CheckResult& check) {
+    const std::string output = check_output(lab, check);
+    const size_t observed = output.find("Observed:");
+    return report::first_line(observed == std::string::npos ? output : output.substr(observed));
+}
+
+std::string checkpoint_failure(const LabResult& lab, const CheckpointResult& cp) {
+    for (const CheckResult* c : cp.checks) {
+        if (c->passed) continue;
+        const std::string why = check_failure(lab, *c);
+        return c->title + (why.empty() ? "" : ": " + why);
+    }
+    return {};
+}
+
+Thumbnails::Thumbnails(std::string out_dir, size_t budget, int max_side)
+    : out_dir_(std::move(out_dir)), budget_(budget), max_side_(max_side) {}
+
+std::string Thumbnails::uri(const std::string& relative, bool difference) {
+    if (relative.empty()) return {};
+    std::ifstream file(report::in_dir(out_dir_, relative), std::ios::binary);
+    if (!file) return {};
+    const std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    try {
+        const fw::Image small = fw::shrink(fw::decode_png(bytes, relative), max_side_, difference);
+        // Whichever is smaller: PNG for flat colours, JPEG for shading. A
+        // difference image stays PNG: JPEG would blur its single pixels.
+        const std::string png = fw::encode_png(small);
+        const std::string jpeg = difference ? std::string() : fw::encode_jpeg(small, 85);
+        return !jpeg.empty() && jpeg.size() < png.size() ? "data:image/jpeg;base64," + base64(jpeg)
+                                                         : "data:image/png;base64," + base64(png);
+    } catch (const fw::Error&) {
+        return {};  // course wrote these files; one that does not decode is simply not shown
+    }
+}
+
+std::vector<Thumbnails::Picture> Thumbnails::for_checkpoint(const CheckpointResult& cp,
+                                                            bool* left_out) {
+    if (left_out) *left_out = false;
+    if (cp.passed || cp.rendered.empty()) return {};
+    if (used_ >= budget_) {
+        ++skipped_;
+        if (left_out) *left_out = true;
+        return {};
+    }
+    struct Source {
+        const char* label;
+        std::string relative;
+        bool difference;
+    };
+    const Source sources[] = {{"rendered", cp.rendered, false},
+                              {"expected", cp.expected, false},
+                              {"difference", cp.image_failed ? cp.difference : "", true}};
+    std::vector<Picture> pictures;
+    for (const Source& source : sources) {
+        std::string u = uri(source.relative, source.difference);
+        if (u.empty()) continue;
+        used_ += u.size();
+        pictures.push_back({source.label, std::move(u)});
+    }
+    return pictures;
+}
+
+std::string lab_number(const LabResult& lab, size_t index) {
+    size_t digits = 0;
+    while (digits < lab.lab.size() && std::isdigit(static_cast<unsigned char>(lab.lab[digits])))
+        ++digits;
+    if (digits == 0) return std::to_string(index);
+    const size_t first = lab.lab.find_first_not_of('0');
+    return first >= digits ? "0" : lab.lab.substr(first, digits - first);
+}
+
+std::string base64(const std::string& bytes) {
+    static const char alphabet[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const size_t n = std::min<size_t>(3, bytes.size() - i);
+        std::uint32_t group = 0;
+        for (size_t k = 0; k < 3; ++k)
+            group = (group << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+        // n bytes make n + 1 characters; '=' pads the group to four.
+        for (size_t k = 0; k < 4; ++k) out += k <= n ? alphabet[(group >> (18 - 6 * k)) & 63] : '=';
+    }
+    return out;
+}
+
+}  // namespace grading
