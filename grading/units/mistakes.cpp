@@ -1,3 +1,5 @@
+// Recognising the usual mistakes of a failing unit check (mistakes.hpp):
+// the alternatives course computes, and the sentences the report prints.
 #include "grading/units/mistakes.hpp"
 
 #include <algorithm>
@@ -130,7 +132,9 @@ struct Checker {
         for (size_t i = 0; i < ref.domains.size(); ++i) {
             if (!ref.domains[i].degrees || (which >= 0 && static_cast<int>(i) != which)) continue;
             if (i >= args.size() || !args[i].is_number()) return;
-            const float x = static_cast<float>(args[i].get<double>() * factor);
+            const double wanted = args[i].get<double>() * factor;
+            if (!(std::fabs(wanted) <= std::numeric_limits<float>::max())) return;
+            const float x = static_cast<float>(wanted);
             changed[i] = double(x);
             below[i] = double(std::nextafter(x, -std::numeric_limits<float>::infinity()));
             above[i] = double(std::nextafter(x, std::numeric_limits<float>::infinity()));
