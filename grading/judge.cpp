@@ -1,6 +1,7 @@
 // Judging a lab's checks from what its child wrote. Only raw outputs count:
 // pixels, depth values, stats numbers and unit results; whatever else the
-// child claims (its stats' "params", extra fields, child.json) is ignored.
+// child claims (its stats' "params", extra fields) is ignored; child.json
+// gives only the status line of a lab whose programs failed to build.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,8 +13,8 @@
 #include "framework/text.hpp"
 #include "grading/checks.hpp"
 #include "grading/image_words.hpp"
+#include "grading/judge_unit.hpp"
 #include "grading/report_text.hpp"
-#include "grading/units/reference.hpp"
 
 namespace grading {
 
@@ -256,61 +257,6 @@ void judge_stat(const json& check, Frame& frame, CheckResult& r) {
     const bool pass = (!check.contains("min") || v >= check["min"].get<double>()) &&
                       (!check.contains("max") || v <= check["max"].get<double>());
     verdict(r, pass, want + seen);
-}
-
-void judge_unit(const LabData& lab, const json& check, const UnitPlan& plan, unsigned seed,
-                const json* units, const std::string& units_why, CheckResult& r) {
-    const ReferenceUnit& ref =
-        find_reference(lab.id, check.at("function").get_ref<const std::string&>());
-    const double tol = check.value("tolerance", ref.tolerance);
-    size_t edges = 0;
-    for (const UnitCase& c : plan.cases) edges += c.edge ? 1 : 0;
-    r.title = "unit " + ref.function.name + " (" + std::to_string(plan.cases.size()) + " cases)";
-    std::string head =
-        "seed " + std::to_string(seed) + " (COURSE_SEED=" + std::to_string(seed) +
-        " repeats these cases): " + std::to_string(plan.cases.size() - edges) + " random and " +
-        std::to_string(edges) + " edge cases; tolerance " + num(tol) +
-        " (relative where |expected| > 1)\nExpected: every case equal to course's reference\n";
-    if (!units) return verdict(r, false, head + "Observed: no results: " + units_why);
-    size_t passed = 0;
-    std::string failures;
-    int shown = 0;
-    for (const UnitCase& c : plan.cases) {
-        std::string why;
-        json expected;
-        bool ok = false;
-        const json entry = units->contains(c.id) ? (*units)[c.id] : json();
-        try {
-            expected = ref.function.call(c.args);
-        } catch (const std::exception& e) {
-            why = std::string("course's reference failed: ") + e.what();
-        }
-        if (!why.empty()) {
-            // course's own reference failed: the case fails, saying so
-        } else if (!entry.is_object() || (!entry.contains("result") && !entry.contains("error"))) {
-            why = "no result for this case in units.json";
-        } else if (entry.contains("error")) {
-            why = "the function failed: " + (entry["error"].is_string()
-                                                 ? entry["error"].get<std::string>()
-                                                 : entry["error"].dump());
-        } else {
-            ok = results_match(expected, entry["result"], tol, &why);
-        }
-        if (ok) {
-            ++passed;
-        } else if (shown++ < 3) {
-            const std::string args =
-                fw::join(c.args, ", ", [](const json& a) { return compact(a, 120); });
-            failures +=
-                "  " + ref.function.name + "(" + args + ")" + (c.edge ? " [edge case]" : "") +
-                "\n    expected " + compact(expected) + "\n    observed " +
-                (entry.contains("result") ? compact(entry["result"]) : "-") + "\n    " + why + "\n";
-        }
-    }
-    std::string out = head + "Observed: " + std::to_string(passed) + " of " +
-                      std::to_string(plan.cases.size()) + " cases passed";
-    if (!failures.empty()) out += "\nFirst failures:\n" + failures;
-    verdict(r, passed == plan.cases.size(), out);
 }
 
 }  // namespace

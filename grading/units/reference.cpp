@@ -124,6 +124,17 @@ bool register_reference(std::string_view lab_dir, ReferenceUnit unit) {
         throw fw::Error("reference '" + unit.lab + "." + unit.function.name + "' takes " +
                         std::to_string(unit.function.arity) + " arguments but has " +
                         std::to_string(unit.domains.size()) + " domains");
+    for (const Alternative& a : unit.alternatives) {
+        const ValueShape &s = a.shape, &r = unit.shape;
+        if (a.function.arity != unit.function.arity || s.kind != r.kind || s.list != r.list ||
+            s.columns != r.columns || s.rows != r.rows)
+            throw fw::Error("reference '" + unit.lab + "." + unit.function.name + "' has an " +
+                            a.function.name +
+                            " alternative whose arguments or result differ from the reference's");
+    }
+    if (!unit.element_names.empty() && !unit.shape.list)
+        throw fw::Error("reference '" + unit.lab + "." + unit.function.name +
+                        "' names the elements of a result that is not a list");
     std::string lab = unit.lab, name = unit.function.name;
     registry()[lab][name] = std::move(unit);
     return true;

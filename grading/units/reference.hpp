@@ -3,19 +3,42 @@
 // folder (labs/NN_name/grading/*.cpp, compiled into `course` only) and
 // registers them with one line each, for the lab of that folder:
 //
-//   COURSE_REFERENCE(translate, &ref_translate, {grading::vec(3, -10, 10)});
+//   COURSE_REFERENCE(translate, &ref_translate, {grading::vec(3, -10, 10)})
+//   COURSE_REFERENCE(rotateZ, &ref_rotate_z, {grading::degrees(-720, 720)})
+//   COURSE_REFERENCE(compose, &ref_compose, {...domains},
+//                    grading::reversed_product(&ref_compose_reversed))
 //
 // For a unit check {"kind": "unit", "function": "translate", "random": 1000,
 // "edge": [[[0, 0, 0]], ...]}, `course` draws `random` fresh argument lists from
 // the domains (the seed is printed; COURSE_SEED fixes it), adds the edge
 // cases, has the `lab` child evaluate the student's function on all of them,
 // and compares each result with the reference's within the tolerance.
+//
+// When cases fail, the report names the usual mistakes that explain them
+// (grading/units/mistakes.hpp): it compares the student's results with
+// transformations of the expected one (transpose, inverse, translation in
+// the bottom row, a vector of another length) and with the reference called on
+// changed arguments. What it may change comes from the registration, after
+// the domains and in any order:
+//   - an argument whose domain is grading::degrees() is an angle in degrees:
+//     the reference is also called with it negated, read as radians
+//     (times 180/pi) and converted twice (times pi/180);
+//   - grading::reversed_product(&fn): fn computes the result with the
+//     product(s) in the other order (several may be given);
+//   - grading::not_normalised(&fn): fn computes it without normalising a
+//     direction the function must normalise;
+//   - grading::element_names({"S", "J", ...}): names for the elements of a
+//     list result, for the report;
+//   - a number: the tolerance (default 1e-4; a check may set its own).
+// These alternatives are course's code like the reference, never the lab's.
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "framework/units.hpp"
@@ -27,8 +50,12 @@ struct ArgDomain {
     enum class Kind { Scalar, Integer, Vector, UnitVector, Bool } kind = Kind::Scalar;
     int size = 1;  // components, for vectors
     double lo = -1.0, hi = 1.0;
+    bool degrees = false;  // a scalar that is an angle in degrees
 };
 inline ArgDomain scalar(double lo, double hi) { return {ArgDomain::Kind::Scalar, 1, lo, hi}; }
+inline ArgDomain degrees(double lo, double hi) {
+    return {ArgDomain::Kind::Scalar, 1, lo, hi, true};
+}
 inline ArgDomain integer(int lo, int hi) {
     return {ArgDomain::Kind::Integer, 1, double(lo), double(hi)};
 }
@@ -36,15 +63,108 @@ inline ArgDomain vec(int n, double lo, double hi) { return {ArgDomain::Kind::Vec
 inline ArgDomain unit_vec(int n) { return {ArgDomain::Kind::UnitVector, n, -1.0, 1.0}; }
 inline ArgDomain boolean() { return {ArgDomain::Kind::Bool, 1, 0.0, 1.0}; }
 
-struct ReferenceUnit {
-    std::string lab;                 // lab id, e.g. "transforms"
-    fw::UnitFunction function;       // name + JSON call, as in the lab
-    std::vector<ArgDomain> domains;  // one per argument
-    double tolerance = 1e-4;         // default; a check may set its own
+// What a function returns, as far as printing it and recognising mistakes
+// need: a vector of `rows` numbers, a matrix of `columns` x `rows` (GLM's
+// mat<C, R>, stored by column), something else (a number, a bool), or a
+// list (std::vector) of one of these.
+struct ValueShape {
+    enum class Kind { Other, Vector, Matrix } kind = Kind::Other;
+    int columns = 1, rows = 1;
+    bool list = false;
 };
 
+template <class T>
+struct ShapeOf {
+    static ValueShape get() { return {}; }
+};
+template <glm::length_t N, glm::qualifier Q>
+struct ShapeOf<glm::vec<N, float, Q>> {
+    static ValueShape get() { return {ValueShape::Kind::Vector, 1, int(N), false}; }
+};
+template <glm::length_t C, glm::length_t R, glm::qualifier Q>
+struct ShapeOf<glm::mat<C, R, float, Q>> {
+    static ValueShape get() { return {ValueShape::Kind::Matrix, int(C), int(R), false}; }
+};
+template <class T>
+struct ShapeOf<std::vector<T>> {
+    static ValueShape get() {
+        ValueShape s = ShapeOf<T>::get();
+        s.list = true;
+        return s;
+    }
+};
+
+// The usual mistakes the report recognises in a failing unit check. Their
+// names (mistake_id() in mistakes.hpp) are part of the report's text.
+enum class Mistake {
+    Transpose,               // "transpose"
+    Inverse,                 // "inverse"
+    ReversedProduct,         // "reversed-product"
+    RadiansForDegrees,       // "radians-for-degrees": an angle in radians where degrees were meant
+    DegreesForRadians,       // "degrees-for-radians": an angle in degrees where radians were meant
+    FlippedAngle,            // "flipped-angle"
+    TranslationInBottomRow,  // "translation-in-bottom-row"
+    NotNormalised,           // "not-normalised"
+};
+
+// What the function returns when written with one mistake, computed by
+// course from the same arguments as the reference.
+struct Alternative {
+    Mistake mistake;
+    fw::UnitFunction function;
+    ValueShape shape;  // of its result: the reference's
+};
+template <class R, class... A>
+Alternative reversed_product(R (*fn)(A...)) {
+    return {Mistake::ReversedProduct, fw::unit_function("reversed product", fn),
+            ShapeOf<std::decay_t<R>>::get()};
+}
+template <class R, class... A>
+Alternative not_normalised(R (*fn)(A...)) {
+    return {Mistake::NotNormalised, fw::unit_function("not normalised", fn),
+            ShapeOf<std::decay_t<R>>::get()};
+}
+
+struct ElementNames {
+    std::vector<std::string> names;
+};
+inline ElementNames element_names(std::vector<std::string> names) { return {std::move(names)}; }
+
+struct ReferenceUnit {
+    std::string lab;                         // lab id, e.g. "transforms"
+    fw::UnitFunction function;               // name + JSON call, as in the lab
+    std::vector<ArgDomain> domains;          // one per argument
+    double tolerance = 1e-4;                 // default; a check may set its own
+    ValueShape shape;                        // of the result
+    std::vector<std::string> element_names;  // of a list result's elements, where known
+    std::vector<Alternative> alternatives;   // for recognising mistakes
+};
+
+inline void add_to_reference(ReferenceUnit& unit, double tolerance) { unit.tolerance = tolerance; }
+inline void add_to_reference(ReferenceUnit& unit, Alternative alternative) {
+    unit.alternatives.push_back(std::move(alternative));
+}
+inline void add_to_reference(ReferenceUnit& unit, ElementNames names) {
+    unit.element_names = std::move(names.names);
+}
+
+// The reference `fn` under `name`, with its domains and the optional extras
+// listed at the top of this file.
+template <class R, class... A, class... Extra>
+ReferenceUnit make_reference(std::string name, R (*fn)(A...), std::vector<ArgDomain> domains,
+                             Extra... extra) {
+    ReferenceUnit unit;
+    unit.function = fw::unit_function(std::move(name), fn);
+    unit.domains = std::move(domains);
+    unit.shape = ShapeOf<std::decay_t<R>>::get();
+    (add_to_reference(unit, std::move(extra)), ...);
+    return unit;
+}
+
 // Registers `unit` for the lab in folder `lab_dir` ("01_transforms"), which
-// fills in unit.lab.
+// fills in unit.lab. Throws fw::Error when the domains or an alternative do
+// not fit the function's arguments, or element names are given for a result
+// that is not a list.
 bool register_reference(std::string_view lab_dir, ReferenceUnit unit);
 // Course's reference for a lab's unit function; throws fw::Error listing the
 // lab's references when there is none by that name. The registry owns every
@@ -69,11 +189,12 @@ bool results_match(const nlohmann::json& expected, const nlohmann::json& observe
 
 #define COURSE_REFERENCE_CAT2(a, b) a##b
 #define COURSE_REFERENCE_CAT(a, b) COURSE_REFERENCE_CAT2(a, b)
-// COURSE_REFERENCE(function_name, &reference_fn, {domains...}[, tolerance])
+// COURSE_REFERENCE(function_name, &reference_fn, {domains...}[, extras...])
+// (the extras, in any order: a tolerance, alternatives, element names)
 #define COURSE_REFERENCE(NAME, FN, ...)                                                           \
     namespace {                                                                                   \
     static_assert(sizeof(FW_LAB_DIR) > 1,                                                         \
                   "COURSE_REFERENCE is only for files in labs/NN_name/grading/");                 \
     const bool COURSE_REFERENCE_CAT(course_reference_, __LINE__) = ::grading::register_reference( \
-        FW_LAB_DIR, {"", ::fw::unit_function(#NAME, FN), __VA_ARGS__});                           \
+        FW_LAB_DIR, ::grading::make_reference(#NAME, FN, __VA_ARGS__));                           \
     }

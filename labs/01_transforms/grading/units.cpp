@@ -1,5 +1,8 @@
 // Lab 1 `transforms`: course's references for the student's matrices, from
-// GLM's own transform helpers (never the lab's code).
+// GLM's own transform helpers (never the lab's code), and what two usual
+// mistakes give, for the report to name them: an axis left unnormalised,
+// the product in reverse order.
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "framework/error.hpp"
@@ -29,29 +32,48 @@ glm::mat4 ref_rotate(float degrees, glm::vec3 axis) {
     return glm::rotate(kIdentity, glm::radians(degrees), axis);
 }
 
+// Rodrigues' formula with the axis as given, not normalised: what rotate()
+// gives when it forgets to normalise.
+glm::mat4 ref_rotate_unnormalised(float degrees, glm::vec3 a) {
+    const float c = std::cos(glm::radians(degrees)), s = std::sin(glm::radians(degrees));
+    // The cross-product matrix of a, column by column: K v = a x v.
+    const glm::mat3 K(0, a.z, -a.y, -a.z, 0, a.x, a.y, -a.x, 0);
+    return glm::mat4(c * glm::mat3(1.0f) + (1.0f - c) * glm::outerProduct(a, a) + s * K);
+}
+
 // "compose" takes an index into kOrders (transforms_math.hpp: the names of
 // the lab's `order` parameter; course uses the names, not the lab's code).
-// M is the product left to right.
-
-glm::mat4 ref_compose(float tx, float ty, float angle, float sx, float sy, int order) {
+// M is the product left to right (`reversed`: right to left).
+glm::mat4 product(float tx, float ty, float angle, float sx, float sy, int order, bool reversed) {
     if (order < 0 || order >= transforms::kOrderCount)
         throw fw::Error("compose: order index " + std::to_string(order) + " is not in 0..5");
     const glm::mat4 T = ref_translate({tx, ty, 0}), R = ref_rotate_z(angle),
                     S = ref_scale({sx, sy, 1});
     glm::mat4 M = kIdentity;
-    for (const char* c = transforms::kOrders[order]; *c; ++c)
-        M = M * (*c == 't' ? T : *c == 'r' ? R : S);
+    for (const char* c = transforms::kOrders[order]; *c; ++c) {
+        const glm::mat4& F = *c == 't' ? T : *c == 'r' ? R : S;
+        M = reversed ? F * M : M * F;
+    }
     return M;
+}
+
+glm::mat4 ref_compose(float tx, float ty, float angle, float sx, float sy, int order) {
+    return product(tx, ty, angle, sx, sy, order, false);
+}
+glm::mat4 ref_compose_reversed(float tx, float ty, float angle, float sx, float sy, int order) {
+    return product(tx, ty, angle, sx, sy, order, true);
 }
 
 }  // namespace
 
 COURSE_REFERENCE(translate, &ref_translate, {grading::vec(3, -10, 10)})
 COURSE_REFERENCE(scale, &ref_scale, {grading::vec(3, -10, 10)})
-COURSE_REFERENCE(rotateX, &ref_rotate_x, {grading::scalar(-720, 720)})
-COURSE_REFERENCE(rotateY, &ref_rotate_y, {grading::scalar(-720, 720)})
-COURSE_REFERENCE(rotateZ, &ref_rotate_z, {grading::scalar(-720, 720)})
-COURSE_REFERENCE(rotate, &ref_rotate, {grading::scalar(-720, 720), grading::vec(3, -10, 10)})
+COURSE_REFERENCE(rotateX, &ref_rotate_x, {grading::degrees(-720, 720)})
+COURSE_REFERENCE(rotateY, &ref_rotate_y, {grading::degrees(-720, 720)})
+COURSE_REFERENCE(rotateZ, &ref_rotate_z, {grading::degrees(-720, 720)})
+COURSE_REFERENCE(rotate, &ref_rotate, {grading::degrees(-720, 720), grading::vec(3, -10, 10)},
+                 grading::not_normalised(&ref_rotate_unnormalised))
 COURSE_REFERENCE(compose, &ref_compose,
-                 {grading::scalar(-2, 2), grading::scalar(-2, 2), grading::scalar(-360, 360),
-                  grading::scalar(-3, 3), grading::scalar(-3, 3), grading::integer(0, 5)})
+                 {grading::scalar(-2, 2), grading::scalar(-2, 2), grading::degrees(-360, 360),
+                  grading::scalar(-3, 3), grading::scalar(-3, 3), grading::integer(0, 5)},
+                 grading::reversed_product(&ref_compose_reversed))

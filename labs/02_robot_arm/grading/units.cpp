@@ -2,9 +2,11 @@
 // Every part of the arm is a rigid motion of the plane: a turn by the sum of
 // the angles above it, then a shift to the point where it is attached. The
 // attachment points follow from trigonometry along the chain, without any
-// matrix product.
+// matrix product. The products in reverse order, for the report to name that
+// mistake, are GLM's.
 #include <cmath>
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
 #include "grading/units/reference.hpp"
@@ -40,7 +42,34 @@ std::vector<glm::mat4> ref_arm_matrices(float shoulder, float hand, float grip) 
             rigid(b - grip * kDegree, end_x - side_x, end_y - side_y)};
 }
 
+glm::mat4 move(float x, float y) { return glm::translate(glm::mat4(1.0f), {x, y, 0.0f}); }
+glm::mat4 turn(float degrees) {
+    return glm::rotate(glm::mat4(1.0f), glm::radians(degrees), {0.0f, 0.0f, 1.0f});
+}
+
+// Each matrix the product of its factors in reverse order, its parent
+// (S, J, H) right: S = move * turn, J = S * T, H = J * R, finger = H * move *
+// turn become turn * move, T * S, R * J and turn * move * H.
+std::vector<glm::mat4> ref_arm_reversed(float shoulder, float hand, float grip) {
+    const std::vector<glm::mat4> m = ref_arm_matrices(shoulder, hand, grip);
+    return {turn(shoulder) * move(-1.5f, -1.5f), move(2.0f, 0.0f) * m[0], turn(hand) * m[1],
+            turn(grip) * move(1.0f, 0.1f) * m[2], turn(-grip) * move(1.0f, -0.1f) * m[2]};
+}
+
+// The fingers' own two factors swapped (H * turn * move): each finger turns
+// about the elbow, the hand's origin, instead of about its own base.
+std::vector<glm::mat4> ref_arm_fingers_reversed(float shoulder, float hand, float grip) {
+    std::vector<glm::mat4> m = ref_arm_matrices(shoulder, hand, grip);
+    m[3] = m[2] * turn(grip) * move(1.0f, 0.1f);
+    m[4] = m[2] * turn(-grip) * move(1.0f, -0.1f);
+    return m;
+}
+
 }  // namespace
 
 COURSE_REFERENCE(arm_matrices, &ref_arm_matrices,
-                 {grading::scalar(-180, 180), grading::scalar(-150, 150), grading::scalar(0, 90)});
+                 {grading::degrees(-180, 180), grading::degrees(-150, 150),
+                  grading::degrees(0, 90)},
+                 grading::element_names({"S", "J", "H", "upper finger", "lower finger"}),
+                 grading::reversed_product(&ref_arm_reversed),
+                 grading::reversed_product(&ref_arm_fingers_reversed))

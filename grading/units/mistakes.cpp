@@ -1,0 +1,421 @@
+// Recognising the usual mistakes of a failing unit check (mistakes.hpp):
+// the alternatives course computes, and the sentences the report prints.
+#include "grading/units/mistakes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace grading {
+
+namespace {
+
+using nlohmann::json;
+using Columns = std::vector<std::vector<double>>;  // [c][r]
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A square matrix of numbers, as columns.
+std::optional<Columns> square_matrix(const json& m) {
+    if (!m.is_array() || m.empty()) return std::nullopt;
+    const size_t n = m.size();
+    Columns out(n);
+    for (size_t c = 0; c < n; ++c) {
+        if (!m[c].is_array() || m[c].size() != n) return std::nullopt;
+        for (const json& v : m[c]) {
+            if (!v.is_number()) return std::nullopt;
+            out[c].push_back(v.get<double>());
+        }
+    }
+    return out;
+}
+
+json to_json(const Columns& m) {
+    json out = json::array();
+    for (const auto& column : m) out.push_back(column);
+    return out;
+}
+
+// `observed` within tolerance of `value` (relative where |value| > 1, as
+// results_match() compares), allowing `slack` more.
+bool close(const json& observed, const json& value, double tolerance, double slack) {
+    if (value.is_array()) {
+        if (!observed.is_array() || observed.size() != value.size()) return false;
+        for (size_t i = 0; i < value.size(); ++i)
+            if (!close(observed[i], value[i], tolerance, slack)) return false;
+        return true;
+    }
+    if (value.is_number()) {
+        if (!observed.is_number()) return false;
+        const double o = observed.get<double>(), v = value.get<double>();
+        return std::isfinite(o) &&
+               std::fabs(o - v) <= tolerance * std::max(1.0, std::fabs(v)) + slack;
+    }
+    return observed == value;
+}
+
+// The largest difference between two values of the same structure.
+double spread(const json& a, const json& b) {
+    if (a.is_array() && b.is_array() && a.size() == b.size()) {
+        double worst = 0.0;
+        for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, spread(a[i], b[i]));
+        return worst;
+    }
+    if (a.is_number() && b.is_number()) {
+        const double d = std::fabs(a.get<double>() - b.get<double>());
+        return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
+    }
+    return a == b ? 0.0 : std::numeric_limits<double>::infinity();
+}
+
+bool same_structure(const json& a, const json& b) {
+    if (a.is_array()) {
+        if (!b.is_array() || a.size() != b.size()) return false;
+        for (size_t i = 0; i < a.size(); ++i)
+            if (!same_structure(a[i], b[i])) return false;
+        return true;
+    }
+    return a.is_number() ? b.is_number() : a.type() == b.type();
+}
+
+// Element `k` of a list result (-1: the whole value); nullopt when missing.
+std::optional<json> element(const json& value, int k) {
+    if (k < 0) return value;
+    if (!value.is_array() || static_cast<size_t>(k) >= value.size()) return std::nullopt;
+    return value[static_cast<size_t>(k)];
+}
+
+// The function on `args`, element `k`; nullopt when it throws (an argument
+// the reference rejects).
+std::optional<json> call(const fw::UnitFunction& f, const json& args, int k) {
+    try {
+        return element(f.call(args), k);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
+struct Checker {
+    const ReferenceUnit& ref;
+    const json& args;
+    const json& expected;  // the element explained
+    const json& observed;
+    int k;
+    double tolerance;
+    std::vector<Explanation> found;
+
+    // Whether `value` explains the case: it matches the observed value and
+    // differs from the expected one.
+    bool matches(const std::optional<json>& value, double slack = 0.0) const {
+        return value && !results_match(expected, *value, tolerance, nullptr) &&
+               close(observed, *value, tolerance, slack);
+    }
+    void add(Mistake m, int argument) {
+        for (const Explanation& e : found)
+            if (e.mistake == m) return;
+        found.push_back({m, k, argument});
+    }
+    void consider(Mistake m, const std::optional<json>& value, int argument = -1) {
+        if (matches(value)) add(m, argument);
+    }
+
+    // The reference with the angles at `which` (-1: every angle argument)
+    // times `factor`. Angles become floats on the way in, so a converted
+    // angle is only as close as one float step: where the reference's
+    // result changes more than the tolerance over that step, the match
+    // allows for that change.
+    void angles(Mistake m, int which, double factor) {
+        json changed = args, below = args, above = args;
+        for (size_t i = 0; i < ref.domains.size(); ++i) {
+            if (!ref.domains[i].degrees || (which >= 0 && static_cast<int>(i) != which)) continue;
+            if (i >= args.size() || !args[i].is_number()) return;
+            const double wanted = args[i].get<double>() * factor;
+            if (!(std::fabs(wanted) <= std::numeric_limits<float>::max())) return;
+            const float x = static_cast<float>(wanted);
+            changed[i] = double(x);
+            below[i] = double(std::nextafter(x, -std::numeric_limits<float>::infinity()));
+            above[i] = double(std::nextafter(x, std::numeric_limits<float>::infinity()));
+        }
+        const std::optional<json> value = call(ref.function, changed, k);
+        if (!value || results_match(expected, *value, tolerance, nullptr)) return;
+        if (close(observed, *value, tolerance, 0.0)) return add(m, which);
+        if (factor == -1.0) return;  // negation is exact
+        const std::optional<json> lo = call(ref.function, below, k);
+        const std::optional<json> hi = call(ref.function, above, k);
+        if (lo && hi && matches(value, spread(*lo, *hi))) add(m, which);
+    }
+
+    void run() {
+        const ValueShape& s = ref.shape;
+        if (s.kind == ValueShape::Kind::Matrix && s.columns == s.rows) {
+            consider(Mistake::Transpose, transposed(expected));
+            consider(Mistake::Inverse, inverted(expected));
+            consider(Mistake::TranslationInBottomRow, translation_in_bottom_row(expected));
+        }
+        if (s.kind == ValueShape::Kind::Vector) unnormalised_vector();
+        std::vector<int> degrees;
+        for (size_t i = 0; i < ref.domains.size(); ++i)
+            if (ref.domains[i].degrees) degrees.push_back(static_cast<int>(i));
+        std::vector<int> which = degrees;
+        if (degrees.size() > 1) which.push_back(-1);
+        for (int i : which) {
+            angles(Mistake::FlippedAngle, i, -1.0);
+            angles(Mistake::DegreesForRadians, i, 180.0 / kPi);
+            angles(Mistake::RadiansForDegrees, i, kPi / 180.0);
+        }
+        for (const Alternative& a : ref.alternatives)
+            consider(a.mistake, call(a.function, args, k));
+    }
+
+    // A unit vector expected, a longer or shorter one observed in its direction.
+    void unnormalised_vector() {
+        if (!expected.is_array() || !observed.is_array()) return;
+        for (const json& v : expected)
+            if (!v.is_number()) return;
+        double e2 = 0.0, o2 = 0.0;
+        for (size_t i = 0; i < expected.size(); ++i) {
+            e2 += expected[i].get<double>() * expected[i].get<double>();
+            o2 += observed[i].get<double>() * observed[i].get<double>();
+        }
+        const double length = std::sqrt(o2);
+        if (std::fabs(std::sqrt(e2) - 1.0) > tolerance || !std::isfinite(length) ||
+            std::fabs(length - 1.0) <= tolerance || length == 0.0)
+            return;
+        json direction = json::array();
+        for (const json& v : observed) direction.push_back(v.get<double>() / length);
+        if (close(direction, expected, tolerance, 0.0)) add(Mistake::NotNormalised, -1);
+    }
+};
+
+}  // namespace
+
+std::string_view mistake_id(Mistake mistake) {
+    switch (mistake) {
+        case Mistake::Transpose:
+            return "transpose";
+        case Mistake::Inverse:
+            return "inverse";
+        case Mistake::ReversedProduct:
+            return "reversed-product";
+        case Mistake::RadiansForDegrees:
+            return "radians-for-degrees";
+        case Mistake::DegreesForRadians:
+            return "degrees-for-radians";
+        case Mistake::FlippedAngle:
+            return "flipped-angle";
+        case Mistake::TranslationInBottomRow:
+            return "translation-in-bottom-row";
+        case Mistake::NotNormalised:
+            return "not-normalised";
+    }
+    return "unknown";
+}
+
+std::optional<json> transposed(const json& m) {
+    std::optional<Columns> a = square_matrix(m);
+    if (!a) return std::nullopt;
+    Columns t = *a;
+    for (size_t c = 0; c < t.size(); ++c)
+        for (size_t r = 0; r < t.size(); ++r) t[c][r] = (*a)[r][c];
+    return to_json(t);
+}
+
+std::optional<json> inverted(const json& m) {
+    std::optional<Columns> a = square_matrix(m);
+    if (!a) return std::nullopt;
+    // Gauss-Jordan with partial pivoting on rows, in double.
+    const size_t n = a->size();
+    std::vector<std::vector<double>> x(n, std::vector<double>(2 * n, 0.0));  // [r][c]
+    double scale = 0.0;
+    for (size_t r = 0; r < n; ++r) {
+        for (size_t c = 0; c < n; ++c) {
+            x[r][c] = (*a)[c][r];
+            scale = std::max(scale, std::fabs(x[r][c]));
+        }
+        x[r][n + r] = 1.0;
+    }
+    if (!(scale > 0.0) || !std::isfinite(scale)) return std::nullopt;
+    for (size_t col = 0; col < n; ++col) {
+        size_t pivot = col;
+        for (size_t r = col + 1; r < n; ++r)
+            if (std::fabs(x[r][col]) > std::fabs(x[pivot][col])) pivot = r;
+        if (std::fabs(x[pivot][col]) <= 1e-9 * scale) return std::nullopt;
+        std::swap(x[col], x[pivot]);
+        const double p = x[col][col];
+        for (double& v : x[col]) v /= p;
+        for (size_t r = 0; r < n; ++r) {
+            if (r == col || x[r][col] == 0.0) continue;
+            const double f = x[r][col];
+            for (size_t c = 0; c < 2 * n; ++c) x[r][c] -= f * x[col][c];
+        }
+    }
+    Columns inv(n, std::vector<double>(n));
+    for (size_t c = 0; c < n; ++c)
+        for (size_t r = 0; r < n; ++r) inv[c][r] = x[r][n + c];
+    return to_json(inv);
+}
+
+std::optional<json> translation_in_bottom_row(const json& m) {
+    std::optional<Columns> a = square_matrix(m);
+    if (!a || a->size() < 3) return std::nullopt;
+    const size_t last = a->size() - 1;
+    Columns b = *a;
+    for (size_t r = 0; r < last; ++r) {
+        b[r][last] = (*a)[last][r];
+        b[last][r] = 0.0;
+    }
+    return to_json(b);
+}
+
+std::vector<Explanation> explain_failure(const ReferenceUnit& ref, const UnitFailure& failure,
+                                         double tolerance) {
+    const json &expected = failure.expected, &observed = failure.observed;
+    if (results_match(expected, observed, tolerance, nullptr) ||
+        !same_structure(expected, observed))
+        return {};
+    int k = -1;
+    if (ref.shape.list) {
+        for (size_t i = 0; i < expected.size() && k < 0; ++i)
+            if (!results_match(expected[i], observed[i], tolerance, nullptr))
+                k = static_cast<int>(i);
+        if (k < 0) return {};
+    }
+    const json& e = k < 0 ? expected : expected[static_cast<size_t>(k)];
+    const json& o = k < 0 ? observed : observed[static_cast<size_t>(k)];
+    Checker checker{ref, failure.args, e, o, k, tolerance, {}};
+    checker.run();
+    return checker.found;
+}
+
+Recognised recognise_mistakes(const ReferenceUnit& ref, const std::vector<UnitFailure>& failures,
+                              double tolerance) {
+    const size_t n = std::min(failures.size(), kMistakeCases);
+    struct Tally {
+        std::set<size_t> cases;
+        std::map<int, int> elements, arguments;
+    };
+    std::map<Mistake, Tally> tallies;
+    for (size_t i = 0; i < n; ++i) {
+        for (const Explanation& e : explain_failure(ref, failures[i], tolerance)) {
+            Tally& t = tallies[e.mistake];
+            t.cases.insert(i);
+            ++t.elements[e.element];
+            ++t.arguments[e.argument];
+        }
+    }
+    auto most = [](const std::map<int, int>& votes) {
+        return std::max_element(votes.begin(), votes.end(),
+                                [](const auto& a, const auto& b) { return a.second < b.second; })
+            ->first;
+    };
+    Recognised out;
+    const std::set<size_t>* first = nullptr;
+    bool same = true;
+    for (const auto& [mistake, tally] : tallies) {
+        if (2 * tally.cases.size() <= n) continue;
+        out.mistakes.push_back({mistake, most(tally.elements), most(tally.arguments)});
+        if (first && *first != tally.cases) same = false;
+        if (!first) first = &tally.cases;
+    }
+    out.coincide = out.mistakes.size() > 1 && same;
+    return out;
+}
+
+std::string likely_mistake(const ReferenceUnit& ref, const Explanation& e) {
+    const ValueShape& s = ref.shape;
+    const bool matrix = s.kind == ValueShape::Kind::Matrix;
+    const std::string noun = matrix                               ? "matrix"
+                             : s.kind == ValueShape::Kind::Vector ? "vector"
+                                                                  : "result";
+    std::string what = "your " + noun;
+    if (s.list && e.element >= 0) {
+        const size_t k = static_cast<size_t>(e.element);
+        const std::string index = "[" + std::to_string(k) + "]";
+        what = k < ref.element_names.size()
+                   ? "your " + ref.element_names[k] + " (" + noun + " " + index + " of the list)"
+                   : "your " + noun + " " + index + " of the list";
+    }
+    int angle_count = 0;
+    for (const ArgDomain& d : ref.domains) angle_count += d.degrees ? 1 : 0;
+    const std::string angle = angle_count <= 1 ? "the angle"
+                              : e.argument < 0
+                                  ? "every angle"
+                                  : "the angle in argument " + std::to_string(e.argument + 1);
+    const int n = s.columns;
+    std::string sentence;
+    switch (e.mistake) {
+        case Mistake::Transpose:
+            sentence = what +
+                       " is the transpose of the expected one (rows and columns swapped): GLM's "
+                       "m[c][r] is column c, row r, and glm::mat4(...) takes its numbers column "
+                       "by column, so a matrix typed in rows into a mat4 constructor comes out "
+                       "transposed; look at how you fill the matrix";
+            break;
+        case Mistake::Inverse:
+            sentence = what +
+                       " is the inverse of the expected one: it undoes the transformation "
+                       "instead of applying it (a translation by -t, a scale by 1/s, a rotation "
+                       "the other way, or for a view matrix the camera's placement in the world "
+                       "instead of the world seen from the camera); check the signs and which "
+                       "way your matrix maps points";
+            break;
+        case Mistake::ReversedProduct:
+            sentence = what +
+                       " is the product of the right matrices in reverse order: with column "
+                       "vectors (p' = M p) the matrix next to the point acts first, so A * B "
+                       "applies B first and differs from B * A; check the order of your "
+                       "multiplications";
+            break;
+        case Mistake::RadiansForDegrees:
+            sentence = what + " is the expected one for " + angle +
+                       " times pi/180: an angle already in radians was used where degrees "
+                       "were meant (converted twice, or glm::radians(angle) passed to a "
+                       "function that takes degrees); convert degrees to radians once, right "
+                       "before sin, cos or tan";
+            break;
+        case Mistake::DegreesForRadians:
+            sentence = what + " is the expected one for " + angle +
+                       " read as radians: an angle in degrees reached sin, cos, tan or a GLM "
+                       "function that takes radians without conversion; convert it with "
+                       "glm::radians(angle) first";
+            break;
+        case Mistake::FlippedAngle:
+            sentence = what + " is the expected one for " + angle +
+                       " negated: a sign is flipped, typically the minus on the wrong sin term "
+                       "(a positive angle turns counter-clockwise seen from the axis' positive "
+                       "end); check the signs of the sin entries";
+            break;
+        case Mistake::TranslationInBottomRow: {
+            std::string column, bottom;
+            for (int r = 0; r + 1 < n; ++r) {
+                column +=
+                    (r ? ", m[" : "m[") + std::to_string(n - 1) + "][" + std::to_string(r) + "]";
+                bottom += "0, ";
+            }
+            sentence = what +
+                       " has the translation in the bottom row instead of the last column: "
+                       "with column vectors (p' = M p, as in GLM and GLSL) the translation is "
+                       "the last column, GLM's " +
+                       column + ", and the bottom row stays (" + bottom +
+                       "1); put the translation into the last column";
+            break;
+        }
+        case Mistake::NotNormalised:
+            sentence = matrix ? what +
+                                    " is the expected one computed with a direction left "
+                                    "unnormalised (a rotation axis or a camera basis vector not "
+                                    "of length 1); normalise each direction with glm::normalize "
+                                    "before building the matrix from it"
+                              : what +
+                                    " points the right way but is not of length 1: a direction "
+                                    "that must be a unit vector was not normalised; apply "
+                                    "glm::normalize to it";
+            break;
+    }
+    return "Likely mistake (" + std::string(mistake_id(e.mistake)) + "): " + sentence + ".";
+}
+
+}  // namespace grading
