@@ -38,7 +38,17 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
 
     primitives_->begin();
     elapsed_->begin();
-    lab_->draw(params, Frame{width, height, 0.0});
+    try {
+        lab_->draw(params, Frame{width, height, 0.0});
+    } catch (...) {
+        // The next frame starts clean: its queries can begin, and GL errors
+        // this draw left are not blamed on it (the exception says what failed).
+        elapsed_->end();
+        primitives_->end();
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        throw;
+    }
     elapsed_->end();
     primitives_->end();
     glFinish();

@@ -4,11 +4,13 @@
 
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "framework/error.hpp"
 #include "framework/gl.hpp"
+#include "framework/lab.hpp"
 #include "tests/support/test_support.hpp"
 
 #define STB_IMAGE_STATIC
@@ -265,6 +267,33 @@ TEST_CASE("shader: a compile error names the file, the stage, the line and quote
                    {"cannot read shader file", "tests/does_not_exist.frag", fw::shader_dir()});
     check_mentions(thrown<fw::UsageError>([] { fw::Shader::from_file("tests/color.glsl"); }),
                    {"tests/color.glsl", ".vert", ".frag", ".comp", "tessellation control"});
+}
+
+TEST_CASE("program library: a program that does not build fails only where it is used") {
+    fw::enable_debug_output();
+    fw::ProgramLibrary programs("tests");
+    fw::Program& good = programs.load({"color.vert", "color.frag"});
+    fw::Program& broken = programs.load({"color.vert", "broken.frag"});
+    CHECK(good.build_error() == nullptr);
+    CHECK_NOTHROW(good.use());
+    REQUIRE(broken.build_error() != nullptr);
+    CHECK(broken.build_error()->file() == "shaders/tests/broken.frag");
+    // Every use of the failed program throws the compiler's message again.
+    for (const auto& use : std::vector<std::function<void()>>{
+             [&] { broken.use(); }, [&] { (void)broken.id(); },
+             [&] { broken.set("u_color", glm::vec3(1.0f)); },
+             [&] { broken.set_if_active("u_color", glm::vec3(1.0f)); }})
+        check_mentions(thrown<fw::ShaderError>(use),
+                       {"shaders/tests/broken.frag:9:", "undeclared_colour"});
+    const std::vector<const fw::ShaderError*> errors = programs.build_errors();
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0]->file() == "shaders/tests/broken.frag");
+    // A reload that still fails keeps it failed, with the message again.
+    const std::vector<std::string> reloaded = programs.reload_all();
+    REQUIRE(reloaded.size() == 1);
+    check_mentions(reloaded[0], {"shaders/tests/broken.frag:9:"});
+    CHECK(programs.build_errors().size() == 1);
+    CHECK_NOTHROW(fw::check_gl("after the failed builds"));
 }
 
 TEST_CASE("program: a link error names the files and gives the linker's log") {

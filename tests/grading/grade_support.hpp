@@ -62,11 +62,73 @@ inline std::vector<std::vector<std::string>> summary_rows(const std::string& sum
     return rows;
 }
 
-// The tests of one lab in results.json ("<lab> / <checkpoint> / <check>").
-inline json lab_tests(const json& results, const std::string& lab) {
+// Text from a report's HTML: the character references it writes, undone.
+inline std::string unescape_markup(const std::string& html) {
+    std::string out;
+    for (size_t i = 0; i < html.size();) {
+        bool replaced = false;
+        for (const auto& [ref, c] : {std::pair<const char*, char>{"&amp;", '&'},
+                                     {"&lt;", '<'},
+                                     {"&gt;", '>'},
+                                     {"&quot;", '"'},
+                                     {"&#39;", '\''}}) {
+            const std::string r = ref;
+            if (html.compare(i, r.size(), r) == 0) {
+                out += c;
+                i += r.size();
+                replaced = true;
+                break;
+            }
+        }
+        if (!replaced) out += html[i++];
+    }
+    return out;
+}
+
+// The checks of results.json, one entry each: a test there is a checkpoint,
+// its extra_data lists the checks in the order its html output shows them,
+// each as "<p><strong>PASS|FAIL</strong> TITLE (...)</p>" and its output in
+// a <pre>. Each entry: {"name": "LAB / CHECKPOINT / TITLE", "status",
+// "score", "max_score", "visibility", "output" (the check's own text),
+// "checkpoint_output" (the checkpoint's whole output, markup and all)}.
+inline json checks_of(const json& results) {
     json out = json::array();
     if (!results.is_object() || !results.contains("tests")) return out;
-    for (const json& t : results["tests"])
+    for (const json& t : results["tests"]) {
+        const std::string html = t.value("output", "");
+        std::vector<size_t> starts;
+        for (size_t at = html.find("<p><strong>"); at != std::string::npos;
+             at = html.find("<p><strong>", at + 1))
+            if (html.compare(at + 11, 4, "PASS") == 0 || html.compare(at + 11, 4, "FAIL") == 0)
+                starts.push_back(at);
+        const json checks = t.contains("extra_data")
+                                ? t["extra_data"].value("checks", json::array())
+                                : json::array();
+        for (size_t i = 0; i < checks.size(); ++i) {
+            std::string output;
+            if (i < starts.size()) {
+                const size_t end = i + 1 < starts.size() ? starts[i + 1] : html.size();
+                const size_t pre = html.find("<pre>", starts[i]);
+                if (pre < end)
+                    output =
+                        unescape_markup(html.substr(pre + 5, html.find("</pre>", pre) - pre - 5));
+            }
+            out.push_back({{"name", t.value("name", "") + " / " + checks[i].value("title", "")},
+                           {"status", checks[i].value("passed", false) ? "passed" : "failed"},
+                           {"score", checks[i].value("score", 0.0)},
+                           {"max_score", checks[i].value("max_score", 0.0)},
+                           {"visibility", t.value("visibility", "")},
+                           {"output", output},
+                           {"checkpoint_output", unescape_markup(html)}});
+        }
+    }
+    return out;
+}
+
+// The checks of one lab in results.json ("<lab> / <checkpoint> / <check>").
+inline json lab_tests(const json& results, const std::string& lab) {
+    json out = json::array();
+    for (const json& t : checks_of(results))
         if (t.value("name", "").rfind(lab + " / ", 0) == 0) out.push_back(t);
     return out;
 }
@@ -104,7 +166,7 @@ inline std::string make_tree(const std::string& dir, bool hostile) {
     return dir;
 }
 
-// Every report file is there and whole; results.json has `checks` tests.
+// Every report file is there and whole; results.json has `checks` checks.
 inline void check_reports(const std::string& out, size_t checks) {
     for (const char* file : {"summary.txt", "results.json", "junit.xml", "index.html"}) {
         CAPTURE(file);
@@ -118,7 +180,7 @@ inline void check_reports(const std::string& out, size_t checks) {
     std::ifstream in(out + "/results.json");
     json results = json::parse(in, nullptr, false);
     REQUIRE(results.is_object());
-    CHECK(results["tests"].size() == checks);
+    CHECK(checks_of(results).size() == checks);
 }
 
 // Every check of lab 0, from its data file (read here, not by course).

@@ -157,21 +157,24 @@ Autograder& autograder() {
     return ag;
 }
 
-// results.json is complete: every check of every lab, each with its fields,
-// the points adding up to the data files' total.
+// results.json is complete: a test per checkpoint of every lab, each with
+// its fields and its checks, the points adding up to the data files' total.
 void check_complete(const Run& run, const Expected& e) {
     REQUIRE_MESSAGE(run.exit_code == 0, "run_autograder must exit 0 whatever the submission");
     REQUIRE_MESSAGE(run.results.is_object(), "results.json is missing or not JSON");
     const json& r = run.results;
     REQUIRE(r.contains("tests"));
-    std::map<std::string, int> seen;
     double score = 0;
     for (const json& t : r["tests"]) {
-        for (const char* field : {"name", "score", "max_score", "status", "output", "visibility"})
+        for (const char* field : {"name", "score", "max_score", "status", "output", "output_format",
+                                  "visibility", "extra_data"})
             CHECK_MESSAGE(t.contains(field), "test " << t.dump() << " has no " << field);
-        const std::string name = t.value("name", "");
-        seen[name.substr(0, name.find(" / ", name.find(" / ") + 3))] += 1;
         score += t.value("score", 0.0);
+    }
+    std::map<std::string, int> seen;
+    for (const json& c : grade_test::checks_of(r)) {
+        const std::string name = c.value("name", "");
+        seen[name.substr(0, name.find(" / ", name.find(" / ") + 3))] += 1;
     }
     CHECK_MESSAGE(seen == e.checks,
                   "Expected the checks of the data files, Observed those of results.json");
@@ -205,9 +208,10 @@ void check_victim_failed(Autograder& ag, const Run& run, const std::string& reas
         if (lab_of(t) != ag.expected.victim) continue;
         score += t.value("score", 0.0);
         max += t.value("max_score", 0.0);
-        CHECK_MESSAGE(t.value("output", "").find(reason) != std::string::npos,
+        const std::string output = grade_test::unescape_markup(t.value("output", ""));
+        CHECK_MESSAGE(output.find(reason) != std::string::npos,
                       t["name"] << ": Expected an output naming \"" << reason << "\", Observed:\n"
-                                << t.value("output", ""));
+                                << output);
     }
     MESSAGE(ag.expected.victim << ": " << score << " of " << max << " points");
     CHECK(max > 0);

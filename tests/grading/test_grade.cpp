@@ -3,8 +3,11 @@
 // Expected scores come from lab 0's data file, read here.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <regex>
+#include <set>
 
 #include "tests/grading/grade_support.hpp"
 
@@ -40,7 +43,8 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
             CAPTURE(t.dump());
             CHECK(t["status"] == "passed");
         }
-        const json* unit = find_named(g.results["tests"], "unit expand_quad");
+        const json checks_seen = checks_of(g.results);
+        const json* unit = find_named(checks_seen, "unit expand_quad");
         REQUIRE(unit);
         CHECK((*unit)["output"].get<std::string>().find("102 of 102 cases passed") !=
               std::string::npos);
@@ -67,7 +71,7 @@ TEST_CASE("course grade --jobs 2 gives the same results as --jobs 1") {
     CHECK(two.exit_code == one.exit_code);
     REQUIRE(one.results.is_object());
     REQUIRE(two.results.is_object());
-    CHECK(one.results["tests"].size() == lab0_checks().size() + 6);
+    CHECK(checks_of(one.results).size() == lab0_checks().size() + 6);
     CHECK(one.results["tests"] == two.results["tests"]);
     CHECK(one.results["score"] == two.results["score"]);
 }
@@ -151,7 +155,8 @@ TEST_CASE("course grade: a unit check fails when the child returns wrong results
     CHECK(g.exit_code == 1);
     REQUIRE(g.results.is_object());
     CHECK(g.results["score"].get<double>() == points(checks) - unit_points);
-    const json* unit = find_named(g.results["tests"], "unit expand_quad");
+    const json checks_seen = checks_of(g.results);
+    const json* unit = find_named(checks_seen, "unit expand_quad");
     REQUIRE(unit);
     CHECK((*unit)["status"] == "failed");
     fw::test::check_mentions(
@@ -256,12 +261,67 @@ TEST_CASE("course grade: NDC and depth probes and stat ranges, judged from the s
         {"order_depth / stat lab_stats.nothing == 1", false,
          "the frame's stats have no lab_stats.nothing"},
     };
+    const json checks_seen = checks_of(g.results);
     for (const Expect& e : expected) {
         CAPTURE(e.name);
-        const json* t = find_named(g.results["tests"], e.name);
+        const json* t = find_named(checks_seen, e.name);
         REQUIRE(t);
         CHECK(((*t)["status"] == "passed") == e.passed);
         fw::test::check_mentions((*t)["output"].get<std::string>(), {e.output});
     }
     CHECK(g.results["score"].get<double>() == points(lab0_checks()) + 4);
+}
+
+TEST_CASE("course grade: a shader that does not compile costs only the checkpoints that use it") {
+    // Lab 4's explode program gets a compile error; its other programs are
+    // whole. The checkpoints that draw in explode mode lose their points with
+    // the compiler's message; every other checkpoint still passes.
+    const std::string shaders = fw::test::out_dir() + "/shaders";
+    fs::remove_all(shaders);
+    fs::copy(fw::test::source_dir() + "/shaders", shaders, fs::copy_options::recursive);
+    const std::string broken = shaders + "/04_geometry/explode.geom";
+    std::string text = fw::test::read_text(broken);
+    const size_t main_at = text.find("void main() {");
+    REQUIRE(main_at != std::string::npos);
+    text.insert(main_at + 13, " undeclared_in_explode = 1;");
+    const std::string line =
+        "explode.geom:" +
+        std::to_string(std::count(text.begin(), text.begin() + main_at, '\n') + 1);
+    write_file(broken, text);
+
+    const std::string out = fw::test::out_dir() + "/report";
+    Graded g = grade("LAB_SHADER_DIR=" + shaders, "geometry", out);
+    CHECK(g.exit_code == 1);
+    REQUIRE(g.results.is_object());
+    // The file as the framework shows it: relative to the repository when inside it.
+    const std::regex status(R"(shader error in \S*04_geometry/explode\.geom)");
+    auto names_file = [&](const std::string& report) { return std::regex_search(report, status); };
+    std::ifstream in(fw::test::source_dir() + "/labs/04_geometry/checkpoints.json");
+    const json doc = json::parse(in, nullptr, true, /*ignore_comments=*/true);
+    std::set<std::string> explode, other;
+    for (const json& cp : doc["checkpoints"])
+        (cp["params"].value("mode", "") == "explode" ? explode : other)
+            .insert("geometry / " + cp["name"].get<std::string>());
+    REQUIRE(!explode.empty());
+    REQUIRE(!other.empty());
+    for (const json& t : g.results["tests"]) {
+        const std::string name = t["name"];
+        CAPTURE(name);
+        if (explode.count(name)) {
+            CHECK(t["status"] == "failed");
+            CHECK(t["score"] == 0);
+            const std::string output = unescape_markup(t["output"]);
+            CHECK(names_file(output));
+            fw::test::check_mentions(output, {line, "failed to compile", "undeclared_in_explode"});
+        } else {
+            CHECK(other.count(name) == 1);
+            CHECK(t["status"] == "passed");
+        }
+    }
+    // The lab's status names the file in every report.
+    for (const char* report : {"summary.txt", "junit.xml", "index.html", "results.json"}) {
+        CAPTURE(report);
+        CHECK(names_file(fw::test::read_text(out + "/" + report)));
+    }
+    CHECK(names_file(g.output));
 }
