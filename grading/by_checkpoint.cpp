@@ -69,6 +69,12 @@ std::string checkpoint_text(const LabResult& lab, const CheckpointResult& cp) {
 
 std::string check_failure(const LabResult& lab, const CheckResult& check) {
     const std::string output = check_output(lab, check);
+    // An image check's first kind of difference says more than its pixel count.
+    const size_t where = output.find("\nWhere:");
+    if (where != std::string::npos) {
+        const size_t kind = output.find("\n  ", where + 1);
+        if (kind != std::string::npos) return report::first_line(output.substr(kind));
+    }
     const size_t observed = output.find("Observed:");
     return report::first_line(observed == std::string::npos ? output : output.substr(observed));
 }

@@ -37,8 +37,9 @@ std::string check_output(const LabResult& lab, const CheckResult& check);
 // 0/2 points") followed by its output, indented; failures first.
 std::string checkpoint_text(const LabResult& lab, const CheckpointResult& cp);
 
-// Why a failed check failed, in one line: its Observed line, or the first
-// line of an output that has none.
+// Why a failed check failed, in one line: for an image check its largest
+// kind of difference ("41,410 pixels: expected blue ..."), else its Observed
+// line, or the first line of an output that has neither.
 std::string check_failure(const LabResult& lab, const CheckResult& check);
 
 // The first thing that went wrong in a checkpoint, in one line: the failed

@@ -69,6 +69,7 @@ table.checks th, table.checks td { text-align: left; vertical-align: top; paddin
 table.checks th { font-weight: 600; font-size: 0.9em; color: #555; }
 table.checks td:nth-child(3), table.checks td:nth-child(4) { width: 38%; }
 table.checks tr.fail td:nth-child(4) pre { background: #fde8e6; }
+table.checks pre { white-space: pre; overflow-x: auto; }
 pre.note { background: none; padding: 0; color: #555; }
 .missing { padding: 2em 0.5em; border: 1px dashed #c62828; color: #b3261e; font-size: 0.9em;
            text-align: center; word-break: break-all; }
@@ -163,7 +164,7 @@ OutputParts split_output(const std::string& output) {
     if (e == std::string::npos || o == std::string::npos || o < e) return {"", "", output};
     auto trim = [](std::string t) {
         while (!t.empty() && (t.back() == '\n' || t.back() == ' ')) t.pop_back();
-        return t;
+        return t.substr(std::min(t.size(), t.find_first_not_of(' ')));
     };
     return {trim(output.substr(0, e)), trim(output.substr(e + 9, o - e - 9)),
             trim(output.substr(o + 9))};
