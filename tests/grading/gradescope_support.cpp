@@ -10,6 +10,7 @@
 #include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -137,7 +138,11 @@ Run submit(const Autograder& ag, const std::string& what,
     std::printf("[%5.1f s] run_autograder, %s: exit %d\n", run.seconds, what.c_str(), r.exit_code);
     std::fflush(stdout);
     const fs::path results = ag.root / "results" / "results.json";
-    if (fs::exists(results)) run.results = json::parse(read_text(results), nullptr, false);
+    if (fs::exists(results)) {
+        const std::string text = read_text(results);
+        run.results_bytes = text.size();
+        run.results = json::parse(text, nullptr, false);
+    }
     const fs::path summary = ag.root / "results" / "grade" / "summary.txt";
     for (const std::vector<std::string>& w : grade_test::summary_rows(read_text(summary)))
         if (w.size() >= 5) run.lab_seconds[w[0]] = std::atof(w.back().c_str());

@@ -33,6 +33,7 @@ struct Run {
     std::string output;  // run_autograder's stdout and stderr
     double seconds = 0;
     json results;                               // results/results.json
+    size_t results_bytes = 0;                   // its size
     std::map<std::string, double> lab_seconds;  // from results/grade/summary.txt
 };
 

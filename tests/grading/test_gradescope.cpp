@@ -64,8 +64,19 @@ TEST_CASE("gradescope: nothing submitted is graded with the student versions, be
     fw::test::check_mentions(run.output, {"not submitted: graded with the student version"});
     const double score = run.results.value("score", -1.0),
                  max = run.results.value("max_score", 0.0);
-    MESSAGE("student versions: " << score << " of " << max << " points");
+    MESSAGE("student versions: " << score << " of " << max << " points; results.json "
+                                 << run.results_bytes << " bytes");
     CHECK(score < max);
+    // The failed checkpoints show pictures, within the 1 MB (check_complete).
+    size_t pictures = 0;
+    for (const json& t : run.results["tests"]) {
+        const std::string output = t.value("output", "");
+        for (size_t at = output.find("<img src=\"data:image/"); at != std::string::npos;
+             at = output.find("<img src=\"data:image/", at + 1))
+            ++pictures;
+    }
+    MESSAGE(pictures << " pictures in results.json");
+    CHECK(pictures > 0);
 }
 
 TEST_CASE("gradescope: the solution, uploaded flat, scores full marks") {
