@@ -28,7 +28,9 @@ using nlohmann::json;
 
 const glm::mat4 kI(1.0f);
 
-const ReferenceUnit& reference(const std::string& lab, const std::string& function) {
+// Plain pointers, not strings: a reference returned from a call that took
+// class temporaries is what GCC's -Wdangling-reference warns about.
+const ReferenceUnit& reference(const char* lab, const char* function) {
     return grading::find_reference(lab, function);
 }
 
@@ -67,7 +69,7 @@ std::set<std::string> ids(const ReferenceUnit& ref, const std::vector<UnitFailur
 // The mistakes named for `f` on random arguments of lab.function.
 std::set<std::string> named(const std::string& lab, const std::string& function, double tolerance,
                             const Student& f) {
-    const ReferenceUnit& ref = reference(lab, function);
+    const ReferenceUnit& ref = reference(lab.c_str(), function.c_str());
     const std::vector<UnitFailure> cases = failures(ref, tolerance, f);
     REQUIRE_MESSAGE(cases.size() > 40, "the deliberate mistake must fail most cases");
     return ids(ref, cases, tolerance);
@@ -163,7 +165,7 @@ glm::vec3 unit_direction(glm::vec3 v) { return glm::normalize(v); }
 std::string judge(const std::string& lab, const std::string& function, double tolerance,
                   const std::vector<json>& edge, const Student& f, int random = 20,
                   bool* passed = nullptr) {
-    const ReferenceUnit& ref = reference(lab, function);
+    const ReferenceUnit& ref = reference(lab.c_str(), function.c_str());
     grading::UnitPlan plan{"cp", 0, {}};
     for (const json& args : edge)
         plan.cases.push_back({"u" + std::to_string(plan.cases.size()), args, true});
@@ -303,7 +305,7 @@ TEST_CASE("correct and unrelated wrong values name nothing") {
         {"projection", "viewport"},  {"pipeline", "expand_quad"}};
     for (const auto& [lab, function] : functions) {
         CAPTURE(function);
-        const ReferenceUnit& ref = reference(lab, function);
+        const ReferenceUnit& ref = reference(lab.c_str(), function.c_str());
         std::mt19937 rng(3);
         for (int i = 0; i < 20; ++i) {
             const json args = grading::random_arguments(ref, rng);
