@@ -117,7 +117,8 @@ std::string lab_of(const std::string& file) {
 
 bool is_shader(const std::string& file) { return fs::path(file).begin()->string() == "shaders"; }
 
-void sync_tree(const fs::path& source, const fs::path& copy, const std::vector<std::string>& files) {
+void sync_tree(const fs::path& source, const fs::path& copy,
+               const std::vector<std::string>& files) {
     std::set<std::string> wanted(files.begin(), files.end());
     if (fs::exists(copy))
         for (auto it = fs::recursive_directory_iterator(copy);

@@ -44,7 +44,7 @@ namespace {
 
 // The kinds of mistake the grader names for a failing unit check.
 const std::set<std::string> kNamedIds = {
-    "transpose",          "inverse",        "reversed-product",           "radians-for-degrees",
+    "transpose",           "inverse",       "reversed-product",          "radians-for-degrees",
     "degrees-for-radians", "flipped-angle", "translation-in-bottom-row", "not-normalised"};
 
 constexpr size_t kMinMistakes = 40, kMinPerLab = 4;
@@ -208,8 +208,7 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         if (!shader && !rebuild_tree(tree, "lab")) {
             result = "DOES NOT BUILD";
         } else {
-            const std::string env =
-                shader ? "LAB_SHADER_DIR=" + shell_quote(shaders.string()) : "";
+            const std::string env = shader ? "LAB_SHADER_DIR=" + shell_quote(shaders.string()) : "";
             const std::string child = shader ? lab : (tree / "build" / "bin" / "lab").string();
             Grade g = grade(course, child, lab_id(m.lab), dir / "mistake", env);
             const std::vector<Loss> losses = visible_losses(solution, g);
@@ -229,8 +228,7 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
             else
                 result = hidden ? "SLIPPED: only " + std::to_string(hidden) + " hidden entries lose"
                                 : "SLIPPED: full marks";
-            if (caught && !m.named.empty())
-                named_found = names_mistake(g, lab_id(m.lab), m.named);
+            if (caught && !m.named.empty()) named_found = names_mistake(g, lab_id(m.lab), m.named);
             for (const auto& [id, status] : g.status)
                 if (status != "ok") result += " [" + id + ": " + status + "]";
         }
