@@ -151,7 +151,8 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
     }
 
     // Block b alone in its student version, graded on its lab (or all labs):
-    // how many checks that pass with the solution fail now.
+    // how many checks that pass with the solution fail now, and how many of
+    // those are in visible checkpoints (the ones that count).
     auto try_block = [&](const Block& b, const std::string& lab_dir) -> std::string {
         if (!lab_dir.empty() && !std::count(labs.begin(), labs.end(), lab_dir))
             return "NOT GRADED: labs/" + lab_dir + " has no checkpoints.json";

@@ -280,5 +280,5 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
     MESSAGE("mistakes, each alone on the solution:\n"
             << report << "\n"
             << table << mistakes.size() << " mistakes in " << seconds_since(total) << " s"
-            << (skip_named ? " (MISTAKES_SKIP_NAMED=1: names not checked)" : ""));
+            << std::string(skip_named ? " (MISTAKES_SKIP_NAMED=1: names not checked)" : ""));
 }
