@@ -180,6 +180,8 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
     for (const std::string& l : graded_labs) lab_ids += " " + lab_id(l);
     Grade solution = grade(course, lab, lab_ids, dir / "solution");
     REQUIRE(solution.results.is_object());
+    CHECK_MESSAGE(solution.exit_code == 0, "the solution itself fails a check:\n"
+                                               << solution.output);
 
     const fs::path shaders = dir / "shaders", tree = dir / "tree";
     fs::remove_all(shaders);
