@@ -1,6 +1,13 @@
-// Realistic student mistakes, each applied alone to the solution by
-// tests/mistakes/test_mistakes.cpp (format there). Each must lose points on a
-// check of a visible checkpoint; "named" ones must be named by the grader.
+// The mistake suite's list: realistic student mistakes, each applied alone
+// to the solution by test_mistakes.cpp (format there). Each must lose points
+// on a check of a visible checkpoint; "named" ones must be named by the
+// grader. The list quotes the solution, so it sits in a solution block and
+// `course release` leaves it out: a student tree has an empty list.
+#pragma once
+
+// BEGIN SOLUTION
+// STUDENT: constexpr const char* kMistakesJson = R"({"mistakes": []})";
+constexpr const char* kMistakesJson = R"json(
 {"mistakes": [
   // Lab 0 `pipeline`
   {"id": "pipeline-color-offset",
@@ -579,3 +586,5 @@
    "replace": "return u_kd * (dot(N, V) > 0.5 ? 1.0 : 0.5);",
    "why": "tests the tone against the eye's direction instead of the light's"}
 ]}
+)json";
+// END SOLUTION
