@@ -1,115 +1,34 @@
 // `course release` end to end, on this repository:
 // - the student tree holds no marker and no hidden checkpoint, builds, runs
 //   every lab without a crash, and scores below full marks;
-// - every solution block is graded: with that block alone in its student
-//   version, some check that passes with the solution fails.
+// - every solution block is graded before the deadline: with that block
+//   alone in its student version, some check of a visible checkpoint that
+//   passes with the solution fails (hidden checkpoints test the same code
+//   with other parameters).
 // Both build trees of their own (minutes); CMake registers them as separate
 // tests (tests/grading/CMakeLists.txt).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
-#include <set>
 #include <sstream>
-#include <thread>
 
 #include "framework/checkpoints.hpp"
 #include "framework/text.hpp"
-#include "grading/commands.hpp"
 #include "grading/release.hpp"
 #include "tests/grading/grade_support.hpp"
+#include "tests/grading/tree_support.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace fs = std::filesystem;
-using fw::test::run_command;
-
-// release_command() is not called here; the tree is passed explicitly.
-std::string grading::source_root() { return fw::test::source_dir(); }
-
-namespace {
-
 using fw::shell_quote;
 using fw::test::read_text;
 using fw::test::write_text;
+using namespace tree_test;
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// Runs `command`; on failure (exit status other than 0, and than 1 when
-// `may_fail`: `course grade` when a check fails) shows its output's tail.
-fw::test::CommandResult run(const std::string& command, bool may_fail = false) {
-    auto start = std::chrono::steady_clock::now();
-    fw::test::CommandResult r = run_command(command);
-    std::printf("[%5.1f s] exit %d: %s\n", seconds_since(start), r.exit_code, command.c_str());
-    std::fflush(stdout);
-    if (r.exit_code != 0 && !(may_fail && r.exit_code == 1))
-        MESSAGE("output (tail):\n"
-                << r.output.substr(r.output.size() > 6000 ? r.output.size() - 6000 : 0));
-    return r;
-}
-
-std::string jobs() { return std::to_string(std::max(1u, std::thread::hardware_concurrency())); }
-
-// Configures and builds `targets` of the tree at `source` into source/build,
-// warnings as errors (the student version must build cleanly too), through
-// ccache when it is installed.
-void build_tree(const fs::path& source, const std::string& targets) {
-    const std::string build = (source / "build").string();
-    std::string configure = "cmake -S " + shell_quote(source.string()) + " -B " +
-                            shell_quote(build) + " -DCMAKE_BUILD_TYPE=Release -DLAB_WERROR=ON";
-    if (run_command("command -v ccache").exit_code == 0)
-        configure += " -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache";
-    REQUIRE_MESSAGE(run(configure).exit_code == 0, "configuring " << source);
-    REQUIRE_MESSAGE(
-        run("cmake --build " + shell_quote(build) + " -j" + jobs() + " --target " + targets)
-                .exit_code == 0,
-        "building " << targets << " in " << source);
-}
-
-struct Grade {
-    int exit_code = -1;
-    std::string output;
-    nlohmann::json results;                     // results.json
-    std::map<std::string, std::string> status;  // lab -> its status in summary.txt
-    std::set<std::string> passed, failed;       // names of the checks
-};
-
-// `course grade` with `lab` as the child, in an environment without LAB_ROOT
-// and LAB_SHADER_DIR but with `env` (VAR=value ...).
-Grade grade(const std::string& course, const std::string& lab, const std::string& labs,
-            const fs::path& out, const std::string& env = "") {
-    fs::remove_all(out);
-    Grade g;
-    auto r = run("env -u LAB_ROOT -u LAB_SHADER_DIR " + env + " " + shell_quote(course) +
-                     " grade " + labs + " --lab " + shell_quote(lab) + " --out " +
-                     shell_quote(out.string()) + " --jobs " + jobs(),
-                 /*may_fail=*/true);
-    g.exit_code = r.exit_code;
-    g.output = r.output;
-    if (!fs::exists(out / "results.json")) return g;
-    g.results = nlohmann::json::parse(read_text(out / "results.json"));
-    for (const auto& t : grade_test::checks_of(g.results))
-        (t["status"] == "passed" ? g.passed : g.failed).insert(t["name"].get<std::string>());
-    for (const std::vector<std::string>& w :
-         grade_test::summary_rows(read_text(out / "summary.txt")))
-        if (w.size() >= 5) g.status[w[0]] = fw::join(std::vector(w.begin() + 3, w.end() - 1), " ");
-    return g;
-}
-
-// The labs with a checkpoints file, by folder.
-std::vector<std::string> lab_dirs(const fs::path& root) {
-    std::vector<std::string> dirs;
-    for (const auto& e : fs::directory_iterator(root / "labs"))
-        if (fs::exists(e.path() / "checkpoints.json")) dirs.push_back(e.path().filename().string());
-    std::sort(dirs.begin(), dirs.end());
-    return dirs;
-}
+namespace {
 
 // A marker line as a person would spot it, whatever its spacing.
 const std::regex kMarker(R"(^\s*//\s*(BEGIN SOLUTION|END SOLUTION|STUDENT:))");
@@ -196,40 +115,6 @@ struct Block {
     int line = 0;      // of its BEGIN marker
 };
 
-// The lab folder a file belongs to (labs/NN_name/..., shaders/NN_name/...);
-// empty for shared code (framework/), which every lab uses.
-std::string lab_of(const std::string& file) {
-    fs::path p(file);
-    auto it = p.begin();
-    if (it == p.end() || (*it != "labs" && *it != "shaders") || ++it == p.end()) return "";
-    return it->string();
-}
-
-bool is_shader(const std::string& file) { return fs::path(file).begin()->string() == "shaders"; }
-
-// Makes `copy` hold the project's files as in `source`, rewriting only what
-// differs so that its build stays incremental between runs.
-void sync_tree(const fs::path& source, const fs::path& copy,
-               const std::vector<std::string>& files) {
-    std::set<std::string> wanted(files.begin(), files.end());
-    if (fs::exists(copy))
-        for (auto it = fs::recursive_directory_iterator(copy);
-             it != fs::recursive_directory_iterator(); ++it) {
-            std::string rel = fs::relative(it->path(), copy).string();
-            if (rel == "build")
-                it.disable_recursion_pending();
-            else if (it->is_regular_file() && !wanted.count(rel))
-                fs::remove(it->path());
-        }
-    for (const std::string& rel : files) {
-        if (!fs::is_regular_file(source / rel)) continue;
-        std::string text = read_text(source / rel);
-        if (fs::exists(copy / rel) && read_text(copy / rel) == text) continue;
-        fs::create_directories((copy / rel).parent_path());
-        fs::copy_file(source / rel, copy / rel, fs::copy_options::overwrite_existing);
-    }
-}
-
 }  // namespace
 
 TEST_CASE("release: every solution block is graded" * doctest::skip()) {
@@ -241,13 +126,22 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
     for (const std::string& file : files)
         if (grading::is_marked_source(file) && fs::is_regular_file(source / file)) {
             auto found = grading::solution_blocks(read_text(source / file), file);
+            // A block under tests/ is no student part: it keeps course data
+            // that quotes the solution (the mistake suite's list) out of the
+            // release.
+            if (fs::path(file).begin()->string() == "tests") {
+                if (!found.empty())
+                    MESSAGE(file << ": " << found.size() << " blocks of course data, not graded");
+                continue;
+            }
             for (size_t i = 0; i < found.size(); ++i)
                 blocks.push_back({file, i, found[i].begin_line});
         }
     MESSAGE(blocks.size() << " solution blocks in " << labs.size() << " labs");
     if (blocks.empty()) return;
 
-    // What the solution passes: a block is graded when one of these fails without it.
+    // What the solution passes: a block is graded when one of these, in a
+    // visible checkpoint, fails without it.
     Grade solution = grade(course, lab, "", dir / "solution");
     REQUIRE(solution.results.is_object());
     MESSAGE("the solution passes " << solution.passed.size() << " of "
@@ -266,7 +160,8 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
     }
 
     // Block b alone in its student version, graded on its lab (or all labs):
-    // how many checks that pass with the solution fail now.
+    // how many checks that pass with the solution fail now, and how many of
+    // those are in visible checkpoints (the ones that count).
     auto try_block = [&](const Block& b, const std::string& lab_dir) -> std::string {
         if (!lab_dir.empty() && !std::count(labs.begin(), labs.end(), lab_dir))
             return "NOT GRADED: labs/" + lab_dir + " has no checkpoints.json";
@@ -276,9 +171,7 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
             shader ? shaders / fs::path(b.file).lexically_relative("shaders") : tree / b.file;
         write_text(target, grading::student_text_of_block(original, b.file, b.index));
         std::string result;
-        if (!shader && run("cmake --build " + shell_quote((tree / "build").string()) + " -j" +
-                           jobs() + " --target lab")
-                               .exit_code != 0) {
+        if (!shader && !rebuild_tree(tree, "lab")) {
             result = "the student version does not build";
         } else {
             std::string env = shader ? "LAB_SHADER_DIR=" + shell_quote(shaders.string()) : "";
@@ -286,12 +179,17 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
             Grade g = grade(course, child, lab_dir, dir / "block", env);
             size_t caught = 0;
             for (const std::string& name : g.failed) caught += solution.passed.count(name);
+            const std::vector<Loss> visible = visible_losses(solution, g);
             if (g.exit_code == 2 || !g.results.is_object())
                 result = "grading failed (exit " + std::to_string(g.exit_code) + ")";
             else if (caught == 0)
                 result = "NOT GRADED: every check the solution passes still passes";
+            else if (visible.empty())
+                result = "NOT GRADED BEFORE THE DEADLINE: only hidden checks fail (" +
+                         std::to_string(caught) + ")";
             else
-                result = std::to_string(caught) + " checks fail";
+                result = std::to_string(visible.size()) + " visible checks fail (" +
+                         std::to_string(caught) + " in all)";
             for (const auto& [id, status] : g.status)
                 if (status != "ok") result += " [" + id + ": " + status + "]";
         }
@@ -313,13 +211,13 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
         std::printf("%s", line);
         std::fflush(stdout);
         report += line;
-        const bool graded = result.find("checks fail") != std::string::npos;
+        const bool graded = result.find("visible checks fail") != std::string::npos;
         CHECK_MESSAGE(graded, where << ": " << result);
         all_graded = all_graded && graded;
     }
     MESSAGE("solution blocks, each alone in its student version:\n"
             << report << blocks.size() << " blocks in " << seconds_since(total) << " s"
             << std::string(all_graded ? ""
-                                      : "; each block not caught needs a check that fails "
-                                        "without it (or is not needed)"));
+                                      : "; each block not caught needs a check of a visible "
+                                        "checkpoint that fails without it (or is not needed)"));
 }
