@@ -290,7 +290,7 @@ public:
                               "please tell the course staff"));
             return;
         }
-        protect_data();
+        private_data();
         if (place_submitted_files() && build_lab()) grade();
     }
 
@@ -322,13 +322,20 @@ private:
         if (geteuid() == 0 && chown(results_.c_str(), 0, 0) == 0) chmod(results_.c_str(), 0755);
     }
 
-    // PrairieLearn copies the checkpoints and references in with each job:
-    // the user must read neither (Gradescope's setup.sh protects its own).
-    void protect_data() {
+    // PrairieLearn brings the checkpoints and references with each job, in
+    // /grade where the user may read: course grades with a copy in the work
+    // directory, which only root may enter (Gradescope's setup.sh protects
+    // its own tree). `course grade --run-as` then checks that the user
+    // cannot read the references.
+    void private_data() {
         if (!as_user_ || layout_.data == source_) return;
-        if (chown(layout_.data.c_str(), 0, 0) != 0 || chmod(layout_.data.c_str(), 0700) != 0)
-            throw fw::Error("cannot make " + layout_.data.string() +
-                            " readable to root alone: " + std::strerror(errno));
+        const fs::path copy = fs::path(work_->path()) / "data";
+        std::error_code ec;
+        fs::copy(layout_.data / "labs", copy / "labs", fs::copy_options::recursive, ec);
+        if (ec)
+            throw fw::Error("cannot copy the checkpoints and references of " +
+                            layout_.data.string() + " to " + copy.string() + ": " + ec.message());
+        setenv("LAB_ROOT", copy.c_str(), 1);
     }
 
     bool place_submitted_files() {
