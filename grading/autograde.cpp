@@ -18,9 +18,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -30,6 +27,7 @@
 #include "grading/gradescope.hpp"
 #include "grading/prairielearn.hpp"
 #include "grading/report_text.hpp"
+#include "grading/submitted_files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -162,110 +160,6 @@ unsigned usable_cpus() {
     return 1;
 }
 
-std::string real_path(const fs::path& path) {
-    std::error_code ec;
-    const fs::path real = fs::canonical(path, ec);
-    return ec ? "" : real.string();
-}
-
-// Whether `a` and `b` are regular files with the same bytes (cmp -s).
-bool same_contents(const fs::path& a, const fs::path& b) {
-    std::error_code ec;
-    if (!fs::is_regular_file(a, ec) || !fs::is_regular_file(b, ec) ||
-        fs::file_size(a, ec) != fs::file_size(b, ec))
-        return false;
-    std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
-    try {
-        return x && y &&
-               std::equal(std::istreambuf_iterator<char>(x), std::istreambuf_iterator<char>(),
-                          std::istreambuf_iterator<char>(y), std::istreambuf_iterator<char>());
-    } catch (const std::ios_base::failure&) {
-        return false;  // a read error: copy it again
-    }
-}
-
-// Overwrites `to` in place (its mode and owner stay; its time changes).
-bool copy_contents(const fs::path& from, const fs::path& to) {
-    std::ifstream in(from, std::ios::binary);
-    if (!in) return false;
-    std::ofstream out(to, std::ios::binary | std::ios::trunc);
-    if (!out) return false;
-    // Streaming an empty file would set failbit: an empty file is copied too.
-    if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
-    return !in.bad() && out.flush();
-}
-
-std::vector<std::string> read_lines(const fs::path& path) {
-    std::ifstream in(path);
-    if (!in)
-        throw fw::Error("cannot read '" + path.string() +
-                        "': the autograder folder lacks its list of student files; write it "
-                        "again with `course gradescope`");
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);)
-        if (!line.empty()) lines.push_back(line);
-    return lines;
-}
-
-// Regular files named `name` below `dir`, not through links (as find -type f).
-std::vector<fs::path> files_named(const fs::path& dir, const std::string& name) {
-    std::vector<fs::path> found;
-    std::error_code ec;
-    fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
-    for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-        if (it->path().filename() == name && fs::is_regular_file(it->symlink_status()))
-            found.push_back(it->path());
-    return found;
-}
-
-// Which file stands for one student file, and how the log describes it.
-struct Chosen {
-    fs::path from;
-    std::string how;
-};
-
-// Picks the submitted files: each file students edit is taken from the
-// submission at the same path, else from the one file of that name anywhere
-// in the submission (uploads may be flat), else from the student version;
-// never the solution. Links that leave the submission, and anything but
-// regular files, are not taken.
-class SubmittedFiles {
-public:
-    SubmittedFiles(const fs::path& submission, const fs::path& versions,
-                   const std::vector<std::string>& files)
-        : submission_(submission), real_(real_path(submission)), versions_(versions) {
-        for (const std::string& rel : files) ++names_[fs::path(rel).filename().string()];
-    }
-
-    Chosen choose(const std::string& rel) const {
-        const std::string name = fs::path(rel).filename().string();
-        if (inside(submission_ / rel)) return {submission_ / rel, "submitted"};
-        Chosen student{versions_ / rel, "not submitted: graded with the student version"};
-        // A name two student files share says nothing of which one it is.
-        if (real_.empty() || names_.at(name) > 1) return student;
-        const std::vector<fs::path> found = files_named(real_, name);
-        if (found.size() == 1 && inside(found[0]))
-            return {found[0], "submitted as " + found[0].string().substr(real_.size() + 1)};
-        if (found.size() > 1)
-            student.how = std::to_string(found.size()) + " files named " + name +
-                          " were submitted, none at " + rel + ": graded with the student version";
-        return student;
-    }
-
-private:
-    // Whether `path` leads to a regular file inside the submission.
-    bool inside(const fs::path& path) const {
-        const std::string real = real_path(path);
-        return !real_.empty() && !real.empty() && fs::is_regular_file(real) &&
-               real.rfind(real_ + "/", 0) == 0;
-    }
-
-    fs::path submission_;
-    std::string real_;  // "" when there is no submission folder
-    fs::path versions_;
-    std::map<std::string, int> names_;  // file name -> how many student files have it
-};
-
 class Autograder {
 public:
     Autograder(const AutogradeOptions& options, const Layout& layout)
@@ -331,7 +225,8 @@ private:
         if (!as_user_ || layout_.data == source_) return;
         const fs::path copy = fs::path(work_->path()) / "data";
         std::error_code ec;
-        fs::copy(layout_.data / "labs", copy / "labs", fs::copy_options::recursive, ec);
+        fs::create_directories(copy, ec);
+        if (!ec) fs::copy(layout_.data / "labs", copy / "labs", fs::copy_options::recursive, ec);
         if (ec)
             throw fw::Error("cannot copy the checkpoints and references of " +
                             layout_.data.string() + " to " + copy.string() + ": " + ec.message());

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -80,7 +81,8 @@ std::string set_up(Grader& g) {
                               shell_quote((g.course / "setup.sh").string()));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    MESSAGE("setup.sh: exit " << r.exit_code << " after " << seconds << " s");
+    std::printf("[%5.1f s] course prairielearn and setup.sh: exit %d\n", seconds, r.exit_code);
+    std::fflush(stdout);
     if (r.exit_code != 0) {
         MESSAGE("setup.sh output (tail):\n"
                 << r.output.substr(r.output.size() > 6000 ? r.output.size() - 6000 : 0));
@@ -117,8 +119,9 @@ Graded grade(const Grader& g, const std::string& what,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Graded out{r.exit_code, r.output, read_text(g.root / "results" / "results.json"), json()};
     out.results = json::parse(out.text, nullptr, false);
-    MESSAGE("grade.sh " << args << ", " << what << ": exit " << r.exit_code << " after " << seconds
-                        << " s, results.json " << out.text.size() << " bytes");
+    std::printf("[%5.1f s] grade.sh %s, %s: exit %d, results.json %zu bytes\n", seconds,
+                args.c_str(), what.c_str(), r.exit_code, out.text.size());
+    std::fflush(stdout);
     if (r.exit_code != 0 || !out.results.is_object()) MESSAGE("grade.sh output:\n" << r.output);
     REQUIRE_MESSAGE(r.exit_code == 0, "grade.sh must exit 0 whatever the submission");
     REQUIRE_MESSAGE(out.results.is_object(), "results.json is missing or not JSON");
