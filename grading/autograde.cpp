@@ -1,10 +1,11 @@
-// `course autograde` (gradescope.hpp): what Gradescope runs for each
-// submission, through the run_autograder shim, as root. It puts the submitted
-// files in place of the solution's, rebuilds `lab`, grades it with `course
-// grade` and copies the results to results/results.json. Whatever the
-// submission does, it leaves a complete results.json: a submission that does
-// not build, or a grader that fails, scores 0 on every check with the reason
-// in the output.
+// `course autograde` (gradescope.hpp): what Gradescope and PrairieLearn run
+// for each submission, through their shims (run_autograder, grade.sh), as
+// root. It puts the submitted files in place of those in the course's tree,
+// rebuilds `lab`, grades it with `course grade` and copies the results to
+// results/results.json. Whatever the submission does, it leaves a complete
+// results.json: for Gradescope, a submission that does not build, or a
+// grader that fails, scores 0 on every check with the reason in the output;
+// for PrairieLearn it is not gradable, with the reason.
 #include <fcntl.h>
 #include <pwd.h>
 #include <sched.h>
@@ -17,9 +18,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -27,7 +25,9 @@
 #include "framework/error.hpp"
 #include "grading/child.hpp"
 #include "grading/gradescope.hpp"
+#include "grading/prairielearn.hpp"
 #include "grading/report_text.hpp"
+#include "grading/submitted_files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -35,7 +35,55 @@ namespace grading {
 
 namespace {
 
-constexpr const char* kPrefix = "run_autograder: ";
+// Where the paths of a layout are (gradescope.hpp, AutogradeOptions).
+struct Layout {
+    ResultsFormat format = ResultsFormat::Gradescope;
+    fs::path source;      // the course's tree, built; its student files are replaced
+    fs::path data;        // LAB_ROOT of `course grade`: checkpoints and references
+    fs::path submission;  // the submitted files
+    fs::path results;     // results.json goes here
+    std::string prefix;   // of the lines printed to the log
+};
+
+Layout resolve_layout(const AutogradeOptions& options) {
+    Layout l;
+    if (options.layout == "prairielearn") {
+        const fs::path root = options.root.empty() ? "/grade" : options.root;
+        if (options.data.empty())
+            throw fw::UsageError(
+                "--layout prairielearn needs --data DIR: the checkpoints and references "
+                "(grade.sh passes its own folder in serverFilesCourse)");
+        l.format = ResultsFormat::PrairieLearn;
+        l.source = options.source.empty() ? "/course" : options.source;
+        l.data = options.data;
+        l.submission = root / "student";
+        l.results = root / "results";
+        l.prefix = "grade.sh: ";
+    } else if (options.layout == "gradescope") {
+        const fs::path root = options.root.empty() ? "/autograder" : options.root;
+        if (!options.source.empty() || !options.data.empty())
+            throw fw::UsageError("--source and --data belong to --layout prairielearn");
+        l.source = root / "source";
+        l.data = l.source;
+        l.submission = root / "submission";
+        l.results = root / "results";
+        l.prefix = "run_autograder: ";
+    } else {
+        throw fw::UsageError("--layout " + options.layout + ": gradescope or prairielearn");
+    }
+    return l;
+}
+
+// The results.json written when not even the failed reports can be made.
+std::string fallback_json(const Layout& layout, const std::string& reason,
+                          const std::string& details) {
+    if (layout.format == ResultsFormat::PrairieLearn)
+        return prairielearn_not_gradable_json(reason, details);
+    return nlohmann::ordered_json{{"score", 0},
+                                  {"output", report::clean_text(reason + "\n\n" + details)}}
+               .dump(2) +
+           "\n";
+}
 
 // What the shell's $? says of a child: its exit status, or 128 + the signal.
 int shell_status(int wait_status) {
@@ -112,120 +160,13 @@ unsigned usable_cpus() {
     return 1;
 }
 
-std::string real_path(const fs::path& path) {
-    std::error_code ec;
-    const fs::path real = fs::canonical(path, ec);
-    return ec ? "" : real.string();
-}
-
-// Whether `a` and `b` are regular files with the same bytes (cmp -s).
-bool same_contents(const fs::path& a, const fs::path& b) {
-    std::error_code ec;
-    if (!fs::is_regular_file(a, ec) || !fs::is_regular_file(b, ec) ||
-        fs::file_size(a, ec) != fs::file_size(b, ec))
-        return false;
-    std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
-    try {
-        return x && y &&
-               std::equal(std::istreambuf_iterator<char>(x), std::istreambuf_iterator<char>(),
-                          std::istreambuf_iterator<char>(y), std::istreambuf_iterator<char>());
-    } catch (const std::ios_base::failure&) {
-        return false;  // a read error: copy it again
-    }
-}
-
-// Overwrites `to` in place (its mode and owner stay; its time changes).
-bool copy_contents(const fs::path& from, const fs::path& to) {
-    std::ifstream in(from, std::ios::binary);
-    if (!in) return false;
-    std::ofstream out(to, std::ios::binary | std::ios::trunc);
-    if (!out) return false;
-    // Streaming an empty file would set failbit: an empty file is copied too.
-    if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
-    return !in.bad() && out.flush();
-}
-
-std::vector<std::string> read_lines(const fs::path& path) {
-    std::ifstream in(path);
-    if (!in)
-        throw fw::Error("cannot read '" + path.string() +
-                        "': the autograder folder lacks its list of student files; write it "
-                        "again with `course gradescope`");
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);)
-        if (!line.empty()) lines.push_back(line);
-    return lines;
-}
-
-// Regular files named `name` below `dir`, not through links (as find -type f).
-std::vector<fs::path> files_named(const fs::path& dir, const std::string& name) {
-    std::vector<fs::path> found;
-    std::error_code ec;
-    fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
-    for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-        if (it->path().filename() == name && fs::is_regular_file(it->symlink_status()))
-            found.push_back(it->path());
-    return found;
-}
-
-// Which file stands for one student file, and how the log describes it.
-struct Chosen {
-    fs::path from;
-    std::string how;
-};
-
-// Picks the submitted files: each file students edit is taken from the
-// submission at the same path, else from the one file of that name anywhere
-// in the submission (uploads may be flat), else from the student version;
-// never the solution. Links that leave the submission, and anything but
-// regular files, are not taken.
-class SubmittedFiles {
-public:
-    SubmittedFiles(const fs::path& submission, const fs::path& versions,
-                   const std::vector<std::string>& files)
-        : submission_(submission), real_(real_path(submission)), versions_(versions) {
-        for (const std::string& rel : files) ++names_[fs::path(rel).filename().string()];
-    }
-
-    Chosen choose(const std::string& rel) const {
-        const std::string name = fs::path(rel).filename().string();
-        if (inside(submission_ / rel)) return {submission_ / rel, "submitted"};
-        Chosen student{versions_ / rel, "not submitted: graded with the student version"};
-        // A name two student files share says nothing of which one it is.
-        if (real_.empty() || names_.at(name) > 1) return student;
-        const std::vector<fs::path> found = files_named(real_, name);
-        if (found.size() == 1 && inside(found[0]))
-            return {found[0], "submitted as " + found[0].string().substr(real_.size() + 1)};
-        if (found.size() > 1)
-            student.how = std::to_string(found.size()) + " files named " + name +
-                          " were submitted, none at " + rel + ": graded with the student version";
-        return student;
-    }
-
-private:
-    // Whether `path` leads to a regular file inside the submission.
-    bool inside(const fs::path& path) const {
-        const std::string real = real_path(path);
-        return !real_.empty() && !real.empty() && fs::is_regular_file(real) &&
-               real.rfind(real_ + "/", 0) == 0;
-    }
-
-    fs::path submission_;
-    std::string real_;  // "" when there is no submission folder
-    fs::path versions_;
-    std::map<std::string, int> names_;  // file name -> how many student files have it
-};
-
-void write_json(const fs::path& path, const nlohmann::ordered_json& json) {
-    report::write_text_file(path.string(), json.dump(2) + "\n");
-}
-
 class Autograder {
 public:
-    explicit Autograder(const AutogradeOptions& options)
+    Autograder(const AutogradeOptions& options, const Layout& layout)
         : options_(options),
-          source_(fs::path(options.root) / "source"),
-          results_(fs::path(options.root) / "results"),
+          layout_(layout),
+          source_(layout.source),
+          results_(layout.results),
           lab_(source_ / "build" / "bin" / "lab"),
           as_user_(geteuid() == 0 && getpwnam(options.user.c_str()) != nullptr) {}
 
@@ -236,25 +177,27 @@ public:
         } catch (const fw::Error&) {
             const char* tmp = std::getenv("TMPDIR");
             const std::string where = tmp && *tmp ? tmp : "/tmp";
-            write_json(
-                results_ / "results.json",
-                {{"score", 0},
-                 {"output", "the autograder could not create a work directory in " + where}});
+            report::write_text_file(
+                (results_ / "results.json").string(),
+                fallback_json(layout_,
+                              "the autograder could not create a work directory in " + where,
+                              "please tell the course staff"));
             return;
         }
+        private_data();
         if (place_submitted_files() && build_lab()) grade();
     }
 
     // Reports that fail every check with `reason` and the tail of `log` ("":
     // none); if even that fails, a results.json with the score and the reason.
     void not_graded(const std::string& reason, const std::string& log) {
-        std::printf("%s%s\n", kPrefix, reason.c_str());
+        std::printf("%s%s\n", layout_.prefix.c_str(), reason.c_str());
         std::fflush(stdout);
         const fs::path grade = results_ / "grade";
         std::error_code ec;
         fs::remove_all(grade, ec);
         try {
-            not_graded_command(reason, log, grade.string());
+            not_graded_command(reason, log, grade.string(), layout_.format, options_.labs);
             fs::copy_file(grade / "results.json", results_ / "results.json",
                           fs::copy_options::overwrite_existing);
         } catch (const std::exception& e) {
@@ -273,11 +216,27 @@ private:
         if (geteuid() == 0 && chown(results_.c_str(), 0, 0) == 0) chmod(results_.c_str(), 0755);
     }
 
+    // PrairieLearn brings the checkpoints and references with each job, in
+    // /grade where the user may read: course grades with a copy in the work
+    // directory, which only root may enter (Gradescope's setup.sh protects
+    // its own tree). `course grade --run-as` then checks that the user
+    // cannot read the references.
+    void private_data() {
+        if (!as_user_ || layout_.data == source_) return;
+        const fs::path copy = fs::path(work_->path()) / "data";
+        std::error_code ec;
+        fs::create_directories(copy, ec);
+        if (!ec) fs::copy(layout_.data / "labs", copy / "labs", fs::copy_options::recursive, ec);
+        if (ec)
+            throw fw::Error("cannot copy the checkpoints and references of " +
+                            layout_.data.string() + " to " + copy.string() + ": " + ec.message());
+        setenv("LAB_ROOT", copy.c_str(), 1);
+    }
+
     bool place_submitted_files() {
-        std::printf("%sthe submitted files\n", kPrefix);
+        std::printf("%sthe submitted files\n", layout_.prefix.c_str());
         const std::vector<std::string> files = read_lines(source_ / "student_files.txt");
-        const SubmittedFiles submitted(fs::path(options_.root) / "submission",
-                                       source_ / "student_versions", files);
+        const SubmittedFiles submitted(layout_.submission, source_ / "student_versions", files);
         for (const std::string& rel : files) {
             const Chosen chosen = submitted.choose(rel);
             const fs::path to = source_ / rel;
@@ -304,14 +263,16 @@ private:
         command.insert(command.end(), {"cmake", "--build", (source_ / "build").string(), "--target",
                                        "lab", "-j", std::to_string(usable_cpus())});
         const std::string as = as_user_ ? " as " + options_.user : "";
-        std::printf("%sbuilding lab%s\n", kPrefix, as.c_str());
+        std::printf("%sbuilding lab%s\n", layout_.prefix.c_str(), as.c_str());
         std::error_code ec;
         fs::remove(lab_, ec);
         const fs::path log = fs::path(work_->path()) / "build.log";
         if (run_logged(command, log, false) == 0 && access(lab_.c_str(), X_OK) == 0) return true;
-        not_graded(
-            "the submission does not build (the compiler's message is at the top of the results)",
-            log.string());
+        not_graded(layout_.format == ResultsFormat::PrairieLearn
+                       ? "the submission does not build (the compiler's message is under Output)"
+                       : "the submission does not build (the compiler's message is at the top "
+                         "of the results)",
+                   log.string());
         return false;
     }
 
@@ -325,7 +286,15 @@ private:
             command.insert(command.end(), {"--run-as", options_.user});
             shown += " --run-as " + options_.user;
         }
-        std::printf("%s%s\n", kPrefix, shown.c_str());
+        if (layout_.format == ResultsFormat::PrairieLearn) {
+            command.insert(command.end(), {"--format", "prairielearn"});
+            shown += " --format prairielearn";
+        }
+        for (const std::string& lab : options_.labs) {
+            command.push_back(lab);
+            shown += " " + lab;
+        }
+        std::printf("%s%s\n", layout_.prefix.c_str(), shown.c_str());
         const fs::path log = fs::path(work_->path()) / "grade.log";
         const int status = run_logged(command, log, true);
         std::error_code ec;
@@ -348,7 +317,7 @@ private:
 
     void write_fallback(const std::string& reason, const std::string& log,
                         const std::string& error) {
-        std::string text = reason + "\n\n";
+        std::string text;
         try {
             if (!log.empty()) text += log_tail(log, 200) + "\n";
         } catch (const std::exception& e) {
@@ -357,10 +326,12 @@ private:
         text += "\n" + error + "\n";
         std::error_code ec;
         fs::create_directories(results_, ec);
-        write_json(results_ / "results.json", {{"score", 0}, {"output", report::clean_text(text)}});
+        report::write_text_file((results_ / "results.json").string(),
+                                fallback_json(layout_, reason, text));
     }
 
     AutogradeOptions options_;
+    Layout layout_;
     fs::path source_, results_, lab_;
     bool as_user_;                   // build and grade as options_.user (root, and the user exists)
     std::unique_ptr<WorkDir> work_;  // for the logs
@@ -370,10 +341,12 @@ private:
 
 int autograde_command(const AutogradeOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    // course grades this tree, and `lab` reads its shaders from it.
-    setenv("LAB_ROOT", (fs::path(options.root) / "source").c_str(), 1);
+    const Layout layout = resolve_layout(options);
+    // course grades with these checkpoints and references; `lab` reads its
+    // shaders from the tree it was built from.
+    setenv("LAB_ROOT", layout.data.c_str(), 1);
     unsetenv("LAB_SHADER_DIR");
-    Autograder autograder(options);
+    Autograder autograder(options, layout);
     try {
         autograder.run();
     } catch (const std::exception& e) {
@@ -381,7 +354,8 @@ int autograde_command(const AutogradeOptions& options) {
     }
     const auto seconds =
         std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start);
-    std::printf("%sdone in %lld s\n", kPrefix, static_cast<long long>(seconds.count()));
+    std::printf("%sdone in %lld s\n", layout.prefix.c_str(),
+                static_cast<long long>(seconds.count()));
     return 0;
 }
 

@@ -136,6 +136,21 @@ std::vector<Thumbnails::Picture> Thumbnails::for_checkpoint(const CheckpointResu
     return pictures;
 }
 
+std::string within_limit(size_t limit, const std::function<std::string(size_t)>& write) {
+    std::string text = write(0);
+    if (text.size() >= limit) return text;
+    size_t budget = limit - text.size();
+    // Thumbnails stop handing out pictures once the budget is spent, so the
+    // last checkpoint's may go over it: retry with that much less.
+    for (int attempt = 0; attempt < 4 && budget > 0; ++attempt) {
+        std::string with = write(budget);
+        if (with.size() <= limit) return with;
+        const size_t over = with.size() - limit;
+        budget = budget > over ? budget - over : 0;
+    }
+    return text;
+}
+
 std::string lab_number(const LabResult& lab, size_t index) {
     size_t digits = 0;
     while (digits < lab.lab.size() && std::isdigit(static_cast<unsigned char>(lab.lab[digits])))

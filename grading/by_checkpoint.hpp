@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,16 @@ private:
     size_t budget_, used_ = 0, skipped_ = 0;
     int max_side_;
 };
+
+// results.json, in Gradescope's format and in PrairieLearn's, stays under 1 MB
+// (PrairieLearn's limit, and a page a browser shows quickly).
+constexpr size_t kResultsLimit = 900 * 1024;
+
+// What `write(budget)` returns with the largest budget for pictures (bytes of
+// data: URIs) that keeps it within `limit` bytes: the text comes first,
+// whatever it takes (write(0)), the pictures get what is left of `limit`, and
+// less when the last checkpoint's pictures overshoot.
+std::string within_limit(size_t limit, const std::function<std::string(size_t budget)>& write);
 
 // The lab's number from its folder-free id ("03_shading" -> "3"), else
 // `index`: Gradescope orders tests by number.

@@ -19,7 +19,11 @@ struct GradeOptions {
     std::string backend;  // empty: $LAB_BACKEND or auto, decided by the child
     int jobs = 1;
     double timeout_seconds = 60.0;
-    std::string run_as;    // --run-as USER (root only)
+    std::string run_as;  // --run-as USER (root only)
+    // --format: what results.json holds, gradescope or prairielearn; --results:
+    // where it goes (empty: into `out`).
+    std::string format = "gradescope";
+    std::string results;
     bool progress = true;  // a line per lab as it finishes
 };
 int grade_command(const GradeOptions& options);
@@ -33,5 +37,6 @@ int bless_command(const BlessOptions& options);
 
 int release_command(const std::string& out_dir);
 int gradescope_command(const std::string& out_dir);
+int prairielearn_command(const std::string& out_dir);  // prairielearn_folder.cpp
 
 }  // namespace grading

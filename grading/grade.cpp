@@ -196,10 +196,22 @@ std::string backend_name(const GradeOptions& options) {
                                          : "auto";
 }
 
+ResultsFile results_file(const GradeOptions& options) {
+    ResultsFile file;
+    file.path = options.results;
+    if (options.format == "prairielearn")
+        file.format = ResultsFormat::PrairieLearn;
+    else if (options.format != "gradescope")
+        throw fw::UsageError("--format " + options.format +
+                             ": results.json is written as gradescope or prairielearn");
+    return file;
+}
+
 }  // namespace
 
 int grade_command(const GradeOptions& options) {
     const auto start = std::chrono::steady_clock::now();
+    const ResultsFile results = results_file(options);
     const std::vector<LabData> all = discover_labs(source_root());
     const std::vector<LabData> labs = select_labs(all, options.labs);
     for (const LabData& lab : labs) validate_checks(lab);
@@ -238,7 +250,7 @@ int grade_command(const GradeOptions& options) {
     });
 
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_reports(run, options.out);
+    write_reports(run, options.out, results);
     std::printf("%s", summary_table(run).c_str());
     return run.passed() ? 0 : 1;
 }

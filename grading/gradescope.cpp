@@ -43,41 +43,18 @@ constexpr fs::perms kReadable =
 
 // What the folder will hold, read and checked before anything is written.
 struct FolderPlan {
-    std::vector<std::string> files;                             // of the repository
-    std::vector<std::pair<std::string, std::string>> students;  // file -> student version
-    std::vector<std::string> missing;                           // tracked, not in the tree
+    std::vector<std::string> files;  // of the repository
+    StudentFiles students;
+    std::vector<std::string> missing;  // tracked, not in the tree
 };
 
 FolderPlan plan_folder(const fs::path& source) {
-    for (const char* script : kScripts)
-        if (!fs::is_regular_file(source / kTemplates / script))
-            throw fw::Error("missing '" + (source / kTemplates / script).string() +
-                            "'; the autograder's scripts live in " + kTemplates +
-                            "/ of the repository (set LAB_ROOT to it)");
+    for (const char* script : kScripts) require_template(source, kTemplates, script);
     FolderPlan plan;
     plan.files = project_files(source.string());
-    std::string errors;
-    for (const std::string& rel : plan.files) {
-        const fs::path path = source / rel;
-        if (!fs::exists(fs::symlink_status(path))) {
-            plan.missing.push_back(rel);
-            continue;
-        }
-        if (!is_marked_source(rel) || !fs::is_regular_file(fs::symlink_status(path))) continue;
-        try {
-            const std::string text = read_file(path);
-            if (!solution_blocks(text, rel).empty())
-                plan.students.emplace_back(rel, student_text(text, rel));
-        } catch (const fw::Error& e) {
-            errors += std::string("\n  ") + e.what();
-        }
-    }
-    if (!errors.empty())
-        throw fw::Error("the autograder was not written: fix these first:" + errors);
-    if (plan.students.empty())
-        throw fw::Error("no file in '" + source.string() +
-                        "' has a solution block, so a submission would have nothing to "
-                        "replace; mark the student parts (docs/conventions.md, Student parts)");
+    for (const std::string& rel : plan.files)
+        if (!fs::exists(fs::symlink_status(source / rel))) plan.missing.push_back(rel);
+    plan.students = student_files(source, plan.files);
     return plan;
 }
 
@@ -95,12 +72,7 @@ size_t write_folder(const FolderPlan& plan, const fs::path& source, const fs::pa
     }
     for (const char* script : kScripts)
         write_file(dest / script, read_file(source / kTemplates / script), kExecutable);
-    std::string list;
-    for (const auto& [rel, text] : plan.students) {
-        list += rel + "\n";
-        write_file(dest / kStudentVersions / rel, text, kReadable);
-    }
-    write_file(dest / kStudentFiles, list, kReadable);
+    write_student_files(plan.students, dest);
     return copied;
 }
 
@@ -123,6 +95,45 @@ void print_folder(const FolderPlan& plan, const fs::path& source, size_t copied,
 }
 
 }  // namespace
+
+void require_template(const fs::path& source, const std::string& folder, const std::string& name) {
+    if (!fs::is_regular_file(source / folder / name))
+        throw fw::Error("missing '" + (source / folder / name).string() +
+                        "'; the autograder's scripts live in " + folder +
+                        "/ of the repository (set LAB_ROOT to it)");
+}
+
+StudentFiles student_files(const fs::path& source, const std::vector<std::string>& files) {
+    StudentFiles students;
+    std::string errors;
+    for (const std::string& rel : files) {
+        const fs::path path = source / rel;
+        if (!is_marked_source(rel) || !fs::is_regular_file(fs::symlink_status(path))) continue;
+        try {
+            const std::string text = read_file(path);
+            if (!solution_blocks(text, rel).empty())
+                students.emplace_back(rel, student_text(text, rel));
+        } catch (const fw::Error& e) {
+            errors += std::string("\n  ") + e.what();
+        }
+    }
+    if (!errors.empty())
+        throw fw::Error("the autograder was not written: fix these first:" + errors);
+    if (students.empty())
+        throw fw::Error("no file in '" + source.string() +
+                        "' has a solution block, so a submission would have nothing to "
+                        "replace; mark the student parts (docs/conventions.md, Student parts)");
+    return students;
+}
+
+void write_student_files(const StudentFiles& students, const fs::path& dest) {
+    std::string list;
+    for (const auto& [rel, text] : students) {
+        list += rel + "\n";
+        write_file(dest / kStudentVersions / rel, text, kReadable);
+    }
+    write_file(dest / kStudentFiles, list, kReadable);
+}
 
 int gradescope_command(const std::string& out_dir) {
     const fs::path source(source_root()), dest(out_dir);

@@ -32,6 +32,9 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     grade->add_option("--timeout", g.timeout_seconds, "Seconds per lab (default 60)")
         ->check(CLI::Range(1.0, 3600.0));
     grade->add_option("--run-as", g.run_as, "Run the child as this user (when root)");
+    grade->add_option("--format", g.format, "What results.json holds (default gradescope)")
+        ->check(CLI::IsMember({"gradescope", "prairielearn"}));
+    grade->add_option("--results", g.results, "Write results.json here (default: into --out)");
     return {grade, [&g] { return grading::grade_command(g); }};
 }
 
@@ -56,14 +59,31 @@ Command add_gradescope(CLI::App& app, std::string& out) {
     return {gradescope, [&out] { return grading::gradescope_command(out); }};
 }
 
-// Hidden: the autograder's run_autograder (grading/gradescope/) runs it for
-// each submission. The timeout is passed on to `course grade` as given, so
-// that a value grade refuses fails the grading with grade's own message.
+Command add_prairielearn(CLI::App& app, std::string& out) {
+    auto* prairielearn =
+        app.add_subcommand("prairielearn", "Write PrairieLearn's grader image and course files");
+    prairielearn->add_option("--out", out, "Directory to write")->required();
+    return {prairielearn, [&out] { return grading::prairielearn_command(out); }};
+}
+
+// Hidden: the autograders' scripts (run_autograder in grading/gradescope/,
+// grade.sh in grading/prairielearn/) run it for each submission. The timeout
+// is passed on to `course grade` as given, so that a value grade refuses
+// fails the grading with grade's own message.
 Command add_autograde(CLI::App& app, grading::AutogradeOptions& a) {
     auto* autograde = app.add_subcommand(
-        "autograde", "Grade a Gradescope submission and write results/results.json");
+        "autograde", "Grade a submission and write results/results.json under --root");
     autograde->group("");
-    autograde->add_option("--root", a.root, "Holds source/, submission/, results/ (/autograder)");
+    autograde->add_option("LAB", a.labs, "Labs to grade (default: all)");
+    autograde->add_option("--layout", a.layout, "gradescope or prairielearn (gradescope)")
+        ->check(CLI::IsMember({"gradescope", "prairielearn"}));
+    autograde->add_option("--root", a.root,
+                          "gradescope: holds source/, submission/, results/ (/autograder); "
+                          "prairielearn: holds student/, results/ (/grade)");
+    autograde->add_option("--source", a.source,
+                          "prairielearn: the built course with its student_files.txt (/course)");
+    autograde->add_option("--data", a.data,
+                          "prairielearn: the checkpoints and references course grades with");
     autograde->add_option("--user", a.user, "Build and run the submission as this user (student)");
     autograde->add_option("--timeout", a.timeout, "Seconds per lab, for course grade (60)");
     return {autograde, [&a] { return grading::autograde_command(a); }};
@@ -91,11 +111,14 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     grading::GradeOptions grade;
     grading::BlessOptions bless;
-    std::string release_out, gradescope_out;
+    std::string release_out, gradescope_out, prairielearn_out;
     grading::AutogradeOptions autograde;
-    const std::vector<Command> commands = {
-        add_grade(app, grade), add_bless(app, bless), add_release(app, release_out),
-        add_gradescope(app, gradescope_out), add_autograde(app, autograde)};
+    const std::vector<Command> commands = {add_grade(app, grade),
+                                           add_bless(app, bless),
+                                           add_release(app, release_out),
+                                           add_gradescope(app, gradescope_out),
+                                           add_prairielearn(app, prairielearn_out),
+                                           add_autograde(app, autograde)};
 
     try {
         app.parse(argc, argv);

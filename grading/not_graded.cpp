@@ -1,5 +1,6 @@
 // `course autograde`'s reports of a submission it could not grade
-// (gradescope.hpp): every check failed with the reason.
+// (gradescope.hpp): every check failed with the reason; for PrairieLearn, a
+// results.json that says the submission was not gradable.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include "grading/child.hpp"
 #include "grading/commands.hpp"
 #include "grading/gradescope.hpp"
+#include "grading/prairielearn.hpp"
 #include "grading/release.hpp"
 #include "grading/report_text.hpp"
 #include "grading/reports.hpp"
@@ -34,7 +36,8 @@ std::string log_tail(const std::string& path, int lines) {
 }
 
 int not_graded_command(const std::string& reason, const std::string& log_file,
-                       const std::string& out_dir) {
+                       const std::string& out_dir, ResultsFormat format,
+                       const std::vector<std::string>& labs) {
     const std::string log = log_file.empty() ? "" : log_tail(log_file, 200);
     // The checks, named and scored as `course grade` names them, judged on the
     // outputs of a child that never ran: an empty work directory.
@@ -43,7 +46,7 @@ int not_graded_command(const std::string& reason, const std::string& log_file,
     none.status = reason;
     const ChildOutputs outputs(empty.path(), none, ChildLimits{});
     GradeRun run;
-    for (const LabData& lab : discover_labs(source_root())) {
+    for (const LabData& lab : select_labs(discover_labs(source_root()), labs)) {
         validate_checks(lab);
         LabResult result;
         result.lab = lab.id;
@@ -53,10 +56,15 @@ int not_graded_command(const std::string& reason, const std::string& log_file,
         run.labs.push_back(std::move(result));
     }
     write_reports(run, out_dir);
+    const std::string path = report::in_dir(out_dir, "results.json");
+    if (format == ResultsFormat::PrairieLearn) {
+        report::write_text_file(path, prairielearn_not_gradable_json(reason, log));
+        std::printf("%s", summary_table(run).c_str());
+        return 1;
+    }
 
     // results.json's overall output: the reason once and the log, rather than
     // the reason once per lab.
-    const std::string path = report::in_dir(out_dir, "results.json");
     nlohmann::ordered_json results = nlohmann::ordered_json::parse(read_file(path));
     results["output"] =
         report::clean_text("0/" + report::points(run.max_score()) + " points: " + reason +

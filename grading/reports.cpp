@@ -1,6 +1,7 @@
 // The text reports of a grading run: summary.txt (the score table `course
-// grade` also prints), results.json (Gradescope's autograder format) and
-// junit.xml (for CI dashboards). index.html is in report_html.cpp.
+// grade` also prints), results.json (Gradescope's autograder format, or
+// PrairieLearn's from prairielearn.cpp) and junit.xml (for CI dashboards).
+// index.html is in report_html.cpp.
 #include "grading/reports.hpp"
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/by_checkpoint.hpp"
+#include "grading/prairielearn.hpp"
 #include "grading/report_text.hpp"
 
 namespace grading {
@@ -104,11 +106,6 @@ std::string gradescope_visibility(const LabResult& lab, const CheckResult& check
                     "\" has visibility \"" + check.visibility +
                     "\"; a checkpoint's visibility is visible or hidden");
 }
-
-// results.json stays under 1 MB (PrairieLearn's limit, and a page a browser
-// shows quickly): its text first, whatever it takes, then pictures in what
-// is left of this size, checkpoint by checkpoint in order.
-constexpr size_t kResultsSize = 900 * 1024;
 
 std::string html_pre(const std::string& text) { return "<pre>" + escape_markup(text) + "</pre>"; }
 
@@ -214,9 +211,10 @@ std::string results_json(const GradeRun& run, const std::string& out_dir, size_t
     return results.dump(2) + "\n";
 }
 
+// Pictures, checkpoint by checkpoint in order, in what the text leaves of the limit.
 std::string results_json(const GradeRun& run, const std::string& out_dir) {
-    const size_t text = results_json(run, out_dir, 0).size();
-    return results_json(run, out_dir, kResultsSize > text ? kResultsSize - text : 0);
+    return within_limit(kResultsLimit,
+                        [&](size_t budget) { return results_json(run, out_dir, budget); });
 }
 
 // One <testcase> per checkpoint (classname the lab, name the checkpoint),
@@ -355,7 +353,7 @@ void write_text_file(const std::string& path, const std::string& text) {
 
 }  // namespace report
 
-std::string summary_table(const GradeRun& run) {
+std::string lab_table(const GradeRun& run) {
     using report::ascii;
     using report::points;
     std::vector<std::array<std::string, 5>> rows{{"lab", "score", "checks", "status", "seconds"}};
@@ -381,7 +379,13 @@ std::string summary_table(const GradeRun& run) {
         table += line.substr(0, line.find_last_not_of(' ') + 1) + "\n";
     }
     if (run.labs.empty()) table += "(no labs were graded)\n";
+    return table;
+}
 
+std::string summary_table(const GradeRun& run) {
+    using report::ascii;
+    using report::points;
+    std::string table = lab_table(run);
     std::string failed;
     size_t passed = 0;
     for (const LabResult& lab : run.labs) {
@@ -408,15 +412,24 @@ std::string summary_table(const GradeRun& run) {
     return table;
 }
 
-void write_reports(const GradeRun& run, const std::string& out_dir) {
+void write_reports(const GradeRun& run, const std::string& out_dir, const ResultsFile& results) {
     std::error_code error;
     std::filesystem::create_directories(out_dir, error);
     if (error)
         throw fw::Error("cannot create the report directory " + out_dir + ": " + error.message() +
                         "; pick another --out");
+    if (!results.path.empty()) {
+        const std::filesystem::path parent = std::filesystem::path(results.path).parent_path();
+        if (!parent.empty()) std::filesystem::create_directories(parent, error);
+        if (error)
+            throw fw::Error("cannot create the directory of --results " + results.path + ": " +
+                            error.message());
+    }
     report::write_text_file(report::in_dir(out_dir, "summary.txt"), summary_table(run));
-    report::write_text_file(report::in_dir(out_dir, "results.json"),
-                            report::results_json(run, out_dir));
+    report::write_text_file(
+        results.path.empty() ? report::in_dir(out_dir, "results.json") : results.path,
+        results.format == ResultsFormat::PrairieLearn ? prairielearn_results_json(run, out_dir)
+                                                      : report::results_json(run, out_dir));
     report::write_text_file(report::in_dir(out_dir, "junit.xml"), report::junit_xml(run));
     report::write_text_file(report::in_dir(out_dir, "index.html"),
                             report::html_report(run, out_dir));

@@ -256,6 +256,42 @@ std::map<std::string, std::string> hostile(const Autograder& ag, const std::stri
     return files;
 }
 
+const char* const kHostileLog =
+    R"(printf 'pipeline.cpp:3:5: error: "quoted" \\back\\slash\ttab \001\002 \033[31mred\033[0m )"
+    R"(\377 end of log\n'
+exit 1
+)";
+
+const char* const kBuilds = R"(mkdir -p bin && printf '#!/bin/sh\nexit 0\n' >bin/lab
+chmod +x bin/lab
+)";
+
+void check_log_kept(const std::string& output) {
+    fw::test::check_mentions(output, {"\"quoted\"", "\\back\\slash", "red", "end of log"});
+    CHECK(output.find('\x01') == std::string::npos);
+    CHECK(output.find('\x1b') == std::string::npos);
+}
+
+fs::path make_root(const std::string& name, const std::string& lab_script) {
+    const fs::path root = fs::path(fw::test::out_dir()) / name, source = root / "source";
+    fs::remove_all(root);
+    grade_test::make_tree(source.string(), false);
+    write_text(source / "student_files.txt", "labs/00_pipeline/pipeline.cpp\n");
+    write_text(source / "labs/00_pipeline/pipeline.cpp", "// the solution\n");
+    write_text(source / "student_versions/labs/00_pipeline/pipeline.cpp", "// student version\n");
+    write_text(root / "project/CMakeLists.txt",
+               "cmake_minimum_required(VERSION 3.16)\nproject(fake NONE)\n"
+               "add_custom_target(lab COMMAND sh ${CMAKE_SOURCE_DIR}/lab.sh)\n");
+    write_text(root / "project/lab.sh", lab_script);
+    const auto r = fw::test::run_command("cmake -S " + shell_quote((root / "project").string()) +
+                                         " -B " + shell_quote((source / "build").string()));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    fs::create_directories(source / "course-bin");
+    fs::create_symlink(grade_test::course(), source / "course-bin" / "course");
+    write_text(root / "submission/pipeline.cpp", "// submitted\n");
+    return root;
+}
+
 const Run& solution_run(Autograder& ag) {
     if (!ag.solution) {
         // Flat uploads: each file by its name at the top when no other student

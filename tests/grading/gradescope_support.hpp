@@ -80,4 +80,20 @@ std::map<std::string, std::string> hostile(const Autograder& ag, const std::stri
                                            const std::string& code, bool at_end,
                                            const std::string& includes = "");
 
+// A small fake /autograder for `course autograde`'s error paths, which
+// builds nothing of the repository (test_autograde.cpp and the PrairieLearn
+// tests): source/ holds lab 0's data file and references, one student file
+// (solution and student version), course (a link to this build's) and a
+// configured build whose `lab` target runs `lab_script` in the build folder;
+// submission/ holds that file, uploaded flat. In out_dir()/NAME.
+fs::path make_root(const std::string& name, const std::string& lab_script);
+
+// `lab` scripts for make_root(): a compiler's message with everything JSON
+// must escape or drop, then failure; and a `lab` that builds (bin/lab, a
+// program that does nothing).
+extern const char* const kHostileLog;
+extern const char* const kBuilds;
+// kHostileLog's text is in `output`, without its control characters.
+void check_log_kept(const std::string& output);
+
 }  // namespace gradescope_test

@@ -10,6 +10,7 @@
 
 #include "framework/text.hpp"
 #include "tests/grading/grade_support.hpp"
+#include "tests/grading/gradescope_support.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
@@ -18,43 +19,11 @@ namespace fs = std::filesystem;
 using fw::shell_quote;
 using fw::test::read_text;
 using fw::test::write_text;
+using gradescope_test::check_log_kept;
+using gradescope_test::kBuilds;
+using gradescope_test::kHostileLog;
+using gradescope_test::make_root;
 using nlohmann::json;
-
-// A compiler's message with everything JSON must escape or drop.
-const char* const kHostileLog =
-    R"(printf 'pipeline.cpp:3:5: error: "quoted" \\back\\slash\ttab \001\002 \033[31mred\033[0m )"
-    R"(\377 end of log\n'
-exit 1
-)";
-
-// A `lab` target that builds: bin/lab, a program that does nothing.
-const char* const kBuilds = R"(mkdir -p bin && printf '#!/bin/sh\nexit 0\n' >bin/lab
-chmod +x bin/lab
-)";
-
-// The fake /autograder: source/ holds lab 0's data file and references, one
-// student file (solution and student version), course (a link to this
-// build's) and a configured build whose `lab` target runs `lab_script` in the
-// build folder; the submission holds that file, uploaded flat.
-fs::path make_root(const std::string& name, const std::string& lab_script) {
-    const fs::path root = fs::path(fw::test::out_dir()) / name, source = root / "source";
-    fs::remove_all(root);
-    grade_test::make_tree(source.string(), false);
-    write_text(source / "student_files.txt", "labs/00_pipeline/pipeline.cpp\n");
-    write_text(source / "labs/00_pipeline/pipeline.cpp", "// the solution\n");
-    write_text(source / "student_versions/labs/00_pipeline/pipeline.cpp", "// student version\n");
-    write_text(root / "project/CMakeLists.txt",
-               "cmake_minimum_required(VERSION 3.16)\nproject(fake NONE)\n"
-               "add_custom_target(lab COMMAND sh ${CMAKE_SOURCE_DIR}/lab.sh)\n");
-    write_text(root / "project/lab.sh", lab_script);
-    const auto r = fw::test::run_command("cmake -S " + shell_quote((root / "project").string()) +
-                                         " -B " + shell_quote((source / "build").string()));
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-    fs::create_directories(source / "course-bin");
-    fs::create_symlink(grade_test::course(), source / "course-bin" / "course");
-    write_text(root / "submission/pipeline.cpp", "// submitted\n");
-    return root;
-}
 
 struct Outcome {
     int exit_code = -1;
@@ -85,13 +54,6 @@ void check_not_graded(const Outcome& o, const std::string& reason) {
     CHECK(grade_test::checks_of(o.results).size() == grade_test::lab0_checks().size());
     for (const json& t : o.results["tests"]) CHECK(t["status"] == "failed");
     fw::test::check_mentions(o.results.value("output", ""), {reason});
-}
-
-// The log's text is in `output`, without its control characters.
-void check_log_kept(const std::string& output) {
-    fw::test::check_mentions(output, {"\"quoted\"", "\\back\\slash", "red", "end of log"});
-    CHECK(output.find('\x01') == std::string::npos);
-    CHECK(output.find('\x1b') == std::string::npos);
 }
 
 }  // namespace
