@@ -3,27 +3,10 @@
 
 #include <set>
 
+#include "tests/grading/report_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace prairielearn_test {
-
-std::string base64_decode(const std::string& text) {
-    const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    unsigned bits = 0, value = 0;
-    for (char c : text) {
-        if (c == '=') break;
-        const size_t digit = alphabet.find(c);
-        if (digit == std::string::npos) FAIL("not base64: '" << c << "'");
-        value = (value << 6) | static_cast<unsigned>(digit);
-        bits += 6;
-        if (bits >= 8) {
-            bits -= 8;
-            out += static_cast<char>((value >> bits) & 0xFF);
-        }
-    }
-    return out;
-}
 
 namespace {
 
@@ -86,7 +69,7 @@ std::vector<Picture> check_images(const json& images, const std::string& test) {
             const std::string prefix = std::string("data:image/") + type + ";base64,";
             if (url.rfind(prefix, 0) == 0) {
                 p.type = type;
-                p.bytes = base64_decode(url.substr(prefix.size()));
+                p.bytes = report_fixture::base64_decode(url.substr(prefix.size()));
             }
         }
         REQUIRE_MESSAGE(!p.type.empty(),

@@ -15,9 +15,6 @@ using nlohmann::json;
 // results.json's size limit: PrairieLearn's 1 MB.
 constexpr size_t kMegabyte = 1000 * 1000;
 
-// Standard base64 (RFC 4648), decoded; fails the test on a character outside its alphabet.
-std::string base64_decode(const std::string& text);
-
 // The width and height in a PNG's or a baseline or progressive JPEG's
 // header; false when `bytes` is neither.
 bool image_size(const std::string& bytes, int& width, int& height);

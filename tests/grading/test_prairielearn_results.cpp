@@ -15,6 +15,7 @@
 #include "grading/prairielearn.hpp"
 #include "grading/reports.hpp"
 #include "tests/grading/prairielearn_support.hpp"
+#include "tests/grading/report_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
@@ -26,19 +27,13 @@ using grading::LabResult;
 using nlohmann::json;
 using prairielearn_test::check_schema;
 using prairielearn_test::Picture;
+using report_fixture::base64_decode;
+using report_fixture::check;
+using report_fixture::crashed_transforms;
+using report_fixture::kCrash;
+using report_fixture::write_triangle_pngs;
 
-const std::string kCrash = "crashed (signal 11, SIGSEGV)";
 const grading::ResultsFile kPrairieLearn{grading::ResultsFormat::PrairieLearn, ""};
-
-CheckResult check(const std::string& lab, const std::string& checkpoint, const std::string& kind,
-                  const std::string& title, double score, double max_score, bool passed,
-                  const std::string& output, const std::string& visibility = "visible") {
-    CheckResult c;
-    c.lab = lab, c.checkpoint = checkpoint, c.kind = kind, c.title = title;
-    c.visibility = visibility, c.score = score, c.max_score = max_score, c.passed = passed;
-    c.output = output;
-    return c;
-}
 
 json read_json(const std::string& path) {
     const std::string text = fw::test::read_text(path);
@@ -56,14 +51,7 @@ struct Fixture {
 
     Fixture() {
         fs::remove_all(dir);
-        fs::create_directories(dir + "/00_pipeline");
-        const char* names[] = {"triangle.png", "triangle.expected.png", "triangle.diff.png"};
-        for (int i = 0; i < 3; ++i) {
-            fw::Image img(4, 3, {static_cast<std::uint8_t>(80 * i), 200, 30, 255});
-            img.at(1, 2) = {255, 0, 255, 255};
-            pngs.push_back(std::string("00_pipeline/") + names[i]);
-            fw::write_png(dir + "/" + pngs.back(), img);
-        }
+        pngs = write_triangle_pngs(dir);
         LabResult pipeline;
         pipeline.lab = "00_pipeline";
         pipeline.seconds = 1.5;
@@ -82,17 +70,7 @@ struct Fixture {
         vault.rendered = pngs[0];
         pipeline.checks.push_back(vault);
 
-        LabResult transforms;
-        transforms.lab = "01_transforms";
-        transforms.status = kCrash;
-        transforms.log = "Segmentation fault <core dumped> & more";
-        transforms.seconds = 0.4;
-        CheckResult rotate = check("01_transforms", "rotate", "image", "image vs reference", 0, 5,
-                                   false, "the lab wrote no image");
-        rotate.rendered = "01_transforms/rotate.png";  // never written: the child crashed
-        transforms.checks.push_back(rotate);
-        transforms.checks.push_back(
-            check("01_transforms", "rotate", "stat", "primitives_generated == 2", 0, 2, false, ""));
+        LabResult transforms = crashed_transforms();
         run.labs = {pipeline, transforms};
         run.backend = "osmesa";
         run.seconds = 1.76;

@@ -16,6 +16,7 @@
 #include "framework/image.hpp"
 #include "grading/report_text.hpp"
 #include "grading/reports.hpp"
+#include "tests/grading/report_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
@@ -23,13 +24,17 @@ namespace {
 using grading::CheckResult;
 using grading::GradeRun;
 using grading::LabResult;
+using report_fixture::base64_decode;
+using report_fixture::check;
+using report_fixture::crashed_transforms;
+using report_fixture::kCrash;
+using report_fixture::write_triangle_pngs;
 
 // Output of the failing probe: markup, quotes, a terminal escape, a control
 // character and a byte that is not UTF-8, as a child's output may be.
 const std::string kProbeOutput =
     "Expected (1, 0, 0) < observed & \"quoted\" 'single' \x1b[31mred\x01 \xff\n"
     "tolerance 1/255";
-const std::string kCrash = "crashed (signal 11, SIGSEGV)";
 
 std::string read_text(const std::string& path) {
     std::ifstream file(path, std::ios::binary);
@@ -44,35 +49,6 @@ size_t count(const std::string& text, const std::string& needle) {
     return n;
 }
 
-// An independent decoder (RFC 4648 alphabet) to check the report's encoder.
-std::string base64_decode(const std::string& text) {
-    const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    unsigned bits = 0, value = 0;
-    for (char c : text) {
-        if (c == '=') break;
-        const size_t digit = alphabet.find(c);
-        REQUIRE_MESSAGE(digit != std::string::npos, "not base64: '" << c << "'");
-        value = (value << 6) | static_cast<unsigned>(digit);
-        bits += 6;
-        if (bits >= 8) {
-            bits -= 8;
-            out += static_cast<char>((value >> bits) & 0xFF);
-        }
-    }
-    return out;
-}
-
-CheckResult check(const std::string& lab, const std::string& checkpoint, const std::string& kind,
-                  const std::string& title, double score, double max_score, bool passed,
-                  const std::string& output) {
-    CheckResult c;
-    c.lab = lab, c.checkpoint = checkpoint, c.kind = kind, c.title = title;
-    c.visibility = "visible", c.score = score, c.max_score = max_score, c.passed = passed;
-    c.output = output;
-    return c;
-}
-
 // Lab 00: image 4/4 passed, probe 0/2 failed, hidden unit 3/3 passed.
 // Lab 01 crashed: image 0/5 and stat 0/2 failed. Total 7/16, 2 of 5 passed.
 struct Fixture {
@@ -81,14 +57,7 @@ struct Fixture {
     std::vector<std::string> pngs;  // the three images of the passing check
 
     Fixture() {
-        std::filesystem::create_directories(dir + "/00_pipeline");
-        const char* names[] = {"triangle.png", "triangle.expected.png", "triangle.diff.png"};
-        for (int i = 0; i < 3; ++i) {
-            fw::Image img(4, 3, {static_cast<std::uint8_t>(80 * i), 200, 30, 255});
-            img.at(1, 2) = {255, 0, 255, 255};
-            pngs.push_back(std::string("00_pipeline/") + names[i]);
-            fw::write_png(dir + "/" + pngs.back(), img);
-        }
+        pngs = write_triangle_pngs(dir);
         LabResult pipeline;
         pipeline.lab = "00_pipeline";
         pipeline.seconds = 1.5;
@@ -103,17 +72,7 @@ struct Fixture {
         hidden.visibility = "hidden";
         pipeline.checks.push_back(hidden);
 
-        LabResult transforms;
-        transforms.lab = "01_transforms";
-        transforms.status = kCrash;
-        transforms.log = "Segmentation fault <core dumped> & more";
-        transforms.seconds = 0.4;
-        CheckResult rotate = check("01_transforms", "rotate", "image", "image vs reference", 0, 5,
-                                   false, "the lab wrote no image");
-        rotate.rendered = "01_transforms/rotate.png";  // never written: the child crashed
-        transforms.checks.push_back(rotate);
-        transforms.checks.push_back(
-            check("01_transforms", "rotate", "stat", "primitives_generated == 2", 0, 2, false, ""));
+        LabResult transforms = crashed_transforms();
         run.labs = {pipeline, transforms};
         run.backend = "osmesa";
         run.seconds = 1.76;

@@ -1,0 +1,83 @@
+// What the report tests (test_reports, test_prairielearn_results) build their
+// runs by hand from: a check result, the three small PNG files of an image
+// check, the lab whose child crashed, and an independent base64 decoder to
+// read the pictures back with.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "framework/image.hpp"
+#include "grading/reports.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace report_fixture {
+
+const std::string kCrash = "crashed (signal 11, SIGSEGV)";
+
+inline grading::CheckResult check(const std::string& lab, const std::string& checkpoint,
+                                  const std::string& kind, const std::string& title, double score,
+                                  double max_score, bool passed, const std::string& output,
+                                  const std::string& visibility = "visible") {
+    grading::CheckResult c;
+    c.lab = lab, c.checkpoint = checkpoint, c.kind = kind, c.title = title;
+    c.visibility = visibility, c.score = score, c.max_score = max_score, c.passed = passed;
+    c.output = output;
+    return c;
+}
+
+// Writes dir/00_pipeline/triangle{,.expected,.diff}.png (4 x 3, one magenta
+// pixel each) and returns their paths relative to dir.
+inline std::vector<std::string> write_triangle_pngs(const std::string& dir) {
+    std::filesystem::create_directories(dir + "/00_pipeline");
+    std::vector<std::string> pngs;
+    const char* names[] = {"triangle.png", "triangle.expected.png", "triangle.diff.png"};
+    for (int i = 0; i < 3; ++i) {
+        fw::Image img(4, 3, {static_cast<std::uint8_t>(80 * i), 200, 30, 255});
+        img.at(1, 2) = {255, 0, 255, 255};
+        pngs.push_back(std::string("00_pipeline/") + names[i]);
+        fw::write_png(dir + "/" + pngs.back(), img);
+    }
+    return pngs;
+}
+
+// Lab 01 whose child crashed (kCrash): rotate's image 0/5 (its frame never
+// written) and stat 0/2.
+inline grading::LabResult crashed_transforms() {
+    grading::LabResult transforms;
+    transforms.lab = "01_transforms";
+    transforms.status = kCrash;
+    transforms.log = "Segmentation fault <core dumped> & more";
+    transforms.seconds = 0.4;
+    grading::CheckResult rotate = check("01_transforms", "rotate", "image", "image vs reference", 0,
+                                        5, false, "the lab wrote no image");
+    rotate.rendered = "01_transforms/rotate.png";  // never written: the child crashed
+    transforms.checks.push_back(rotate);
+    transforms.checks.push_back(
+        check("01_transforms", "rotate", "stat", "primitives_generated == 2", 0, 2, false, ""));
+    return transforms;
+}
+
+// Standard base64 (RFC 4648), decoded independently of the reports' encoder;
+// fails the test on a character outside its alphabet.
+inline std::string base64_decode(const std::string& text) {
+    const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    unsigned bits = 0, value = 0;
+    for (char c : text) {
+        if (c == '=') break;
+        const size_t digit = alphabet.find(c);
+        REQUIRE_MESSAGE(digit != std::string::npos, "not base64: '" << c << "'");
+        value = (value << 6) | static_cast<unsigned>(digit);
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            out += static_cast<char>((value >> bits) & 0xFF);
+        }
+    }
+    return out;
+}
+
+}  // namespace report_fixture
