@@ -76,7 +76,18 @@ std::string check_failure(const LabResult& lab, const CheckResult& check) {
         if (kind != std::string::npos) return report::first_line(output.substr(kind));
     }
     const size_t observed = output.find("Observed:");
-    return report::first_line(observed == std::string::npos ? output : output.substr(observed));
+    const std::string from = observed == std::string::npos ? output : output.substr(observed);
+    std::string line = report::first_line(from);
+    // A line that ends in a colon introduces the next one (a compiler's
+    // message after "failed to compile:"): the cause is that one.
+    if (!line.empty() && line.back() == ':') {
+        const size_t end = from.find('\n', from.find(line));
+        if (end != std::string::npos) {
+            const std::string next = report::first_line(from.substr(end + 1));
+            if (!next.empty()) line += " " + next;
+        }
+    }
+    return line;
 }
 
 std::string checkpoint_failure(const LabResult& lab, const CheckpointResult& cp) {

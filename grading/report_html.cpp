@@ -63,13 +63,14 @@ figure { margin: 0; flex: 1 1 300px; max-width: 440px; }
 .shot { width: 100%; background: #888 no-repeat center / contain; image-rendering: pixelated;
         border: 1px solid #ccc; }
 figcaption { font-size: 0.85em; color: #555; text-align: center; }
- table.checks { border-collapse: collapse; width: 100%; margin-top: 0.5em; }
+table.checks { border-collapse: collapse; width: 100%; margin-top: 0.5em; table-layout: fixed; }
 table.checks th, table.checks td { text-align: left; vertical-align: top; padding: 0.2em 0.5em;
                                    border-top: 1px solid #e4e4e4; }
 table.checks th { font-weight: 600; font-size: 0.9em; color: #555; }
-table.checks td:nth-child(3), table.checks td:nth-child(4) { width: 38%; }
+table.checks th:nth-child(1) { width: 3.5em; }
+table.checks th:nth-child(2) { width: 20%; }
 table.checks tr.fail td:nth-child(4) pre { background: #fde8e6; }
-table.checks pre { white-space: pre; overflow-x: auto; }
+table.checks pre { white-space: pre-wrap; overflow-wrap: anywhere; }
 pre.note { background: none; padding: 0; color: #555; }
 .missing { padding: 2em 0.5em; border: 1px dashed #c62828; color: #b3261e; font-size: 0.9em;
            text-align: center; word-break: break-all; }

@@ -324,4 +324,19 @@ TEST_CASE("course grade: a shader that does not compile costs only the checkpoin
         CHECK(names_file(fw::test::read_text(out + "/" + report)));
     }
     CHECK(names_file(g.output));
+    // index.html's list of failed checkpoints gives the compiler's message as
+    // the cause, not only the line that introduces it.
+    const std::string html = fw::test::read_text(out + "/index.html");
+    const size_t list = html.find("<ul class=\"failed-list\">");
+    REQUIRE(list != std::string::npos);
+    const std::string failed = html.substr(list, html.find("</ul>", list) - list);
+    size_t items = 0;
+    for (size_t at = failed.find("<li>"); at != std::string::npos;
+         at = failed.find("<li>", at + 1)) {
+        const std::string item = failed.substr(at, failed.find("</li>", at) - at);
+        CAPTURE(item);
+        CHECK(item.find("undeclared_in_explode") != std::string::npos);
+        ++items;
+    }
+    CHECK(items == explode.size());
 }
