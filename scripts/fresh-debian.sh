@@ -15,11 +15,13 @@
 #   FRESH_DEBIAN_CACHE   a folder kept between runs for downloaded .deb files
 #                        (default: none, everything is downloaded)
 #   FRESH_DEBIAN_UNSHARE 0: mount in this namespace even where unshare works
-#   CI, LAB_REQUIRE_BACKENDS, LAB_REQUIRE_CLANG_FORMAT  passed into the system
-#                        when set (CI=true makes warnings errors there too;
-#                        LAB_REQUIRE_BACKENDS=built fails a test that skips a
-#                        backend the build has; LAB_REQUIRE_CLANG_FORMAT=1 one
-#                        that skips the format check)
+#   CI, LAB_REQUIRE_BACKENDS, LAB_REQUIRE_CLANG_FORMAT, LAB_REQUIRE_BROWSER
+#                        passed into the system when set (CI=true makes
+#                        warnings errors there too; LAB_REQUIRE_BACKENDS=built
+#                        fails a test that skips a backend the build has;
+#                        LAB_REQUIRE_CLANG_FORMAT=1 one that skips the format
+#                        check; LAB_REQUIRE_BROWSER=1 one that skips for want
+#                        of Chromium)
 #
 # Needs root (or sudo) for debootstrap, chroot and mounts. Everything mounted
 # lives in a private mount namespace (unshare) where the machine allows one, so
@@ -99,6 +101,7 @@ inside() {
   [ -n "${CI:-}" ] && env+=("CI=$CI")
   [ -n "${LAB_REQUIRE_BACKENDS:-}" ] && env+=("LAB_REQUIRE_BACKENDS=$LAB_REQUIRE_BACKENDS")
   [ -n "${LAB_REQUIRE_CLANG_FORMAT:-}" ] && env+=("LAB_REQUIRE_CLANG_FORMAT=$LAB_REQUIRE_CLANG_FORMAT")
+  [ -n "${LAB_REQUIRE_BROWSER:-}" ] && env+=("LAB_REQUIRE_BROWSER=$LAB_REQUIRE_BROWSER")
   in_root() { chroot "$target" /usr/bin/env -i "${env[@]}" "$@"; }
 
   # A testing suite's Release file can expire on a mirror that lags; only
@@ -242,7 +245,7 @@ esac
 
 if [ "$(id -u)" -ne 0 ]; then
   command -v sudo >/dev/null || die "needs root for debootstrap, chroot and mounts; run it as root"
-  exec sudo --preserve-env=FRESH_DEBIAN_MIRROR,FRESH_DEBIAN_DIR,FRESH_DEBIAN_CACHE,FRESH_DEBIAN_UNSHARE,CI,LAB_REQUIRE_BACKENDS,LAB_REQUIRE_CLANG_FORMAT \
+  exec sudo --preserve-env=FRESH_DEBIAN_MIRROR,FRESH_DEBIAN_DIR,FRESH_DEBIAN_CACHE,FRESH_DEBIAN_UNSHARE,CI,LAB_REQUIRE_BACKENDS,LAB_REQUIRE_CLANG_FORMAT,LAB_REQUIRE_BROWSER \
     bash "$0" "$@"
 fi
 

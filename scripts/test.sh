@@ -3,7 +3,7 @@
 # suite, ending in ctest's summary. LAB_PRESET=asan runs it under sanitizers.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bash "$root/scripts/setup.sh"
+LAB_SETUP_TESTS=1 bash "$root/scripts/setup.sh"
 preset=${LAB_PRESET:-}
 [ -n "$preset" ] || { [ -n "${CI:-}" ] && preset=ci || preset=default; }
 cd "$root"

@@ -1,7 +1,6 @@
 // What the report tests (test_reports, test_prairielearn_results) build their
 // runs by hand from: a check result, the three small PNG files of an image
-// check, the lab whose child crashed, and an independent base64 decoder to
-// read the pictures back with.
+// check, and the lab whose child crashed.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +10,7 @@
 
 #include "framework/image.hpp"
 #include "grading/reports.hpp"
+#include "tests/support/browser.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace report_fixture {
@@ -60,24 +60,8 @@ inline grading::LabResult crashed_transforms() {
     return transforms;
 }
 
-// Standard base64 (RFC 4648), decoded independently of the reports' encoder;
-// fails the test on a character outside its alphabet.
-inline std::string base64_decode(const std::string& text) {
-    const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    unsigned bits = 0, value = 0;
-    for (char c : text) {
-        if (c == '=') break;
-        const size_t digit = alphabet.find(c);
-        REQUIRE_MESSAGE(digit != std::string::npos, "not base64: '" << c << "'");
-        value = (value << 6) | static_cast<unsigned>(digit);
-        bits += 6;
-        if (bits >= 8) {
-            bits -= 8;
-            out += static_cast<char>((value >> bits) & 0xFF);
-        }
-    }
-    return out;
-}
+// The independent base64 decoder (tests/support/browser.hpp) reads the
+// pictures back.
+using fw::test::base64_decode;
 
 }  // namespace report_fixture
