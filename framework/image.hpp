@@ -60,6 +60,18 @@ Image decode_png(const std::string& bytes, const std::string& name);
 // decoding anything; false when `bytes` does not start like a PNG.
 bool png_header_size(const std::string& bytes, int& width, int& height);
 
+// PAM (netpbm's P7, 8-bit RGB_ALPHA, top row first): raw pixels, for frames
+// handed from one process to another (a grading child to course) with
+// nothing to compress or decompress. decode_pam is strict: the exact header
+// (image_pam.cpp), sizes 1..65536 and exactly the bytes they call for; it
+// throws fw::Error naming `name` and what is wrong.
+std::string encode_pam(const Image& img);
+void write_pam(const std::string& path, const Image& img);
+Image decode_pam(const std::string& bytes, const std::string& name);
+// The width and height a PAM's header states, read without the pixels; false
+// when `bytes` does not start with such a header.
+bool pam_header_size(const std::string& bytes, int& width, int& height);
+
 // PFM, single channel ("Pf"), little-endian float32, rows bottom first:
 // header "Pf\n<width> <height>\n-1.0\n". read_pfm accepts either byte order
 // (the sign of the scale) and rejects colour ("PF") files with a clear error.

@@ -240,17 +240,22 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
     plan.job = {{"lab", lab.id}, {"renders", json::array()}, {"units", json::array()}};
     int next_id = 0;
     for (const fw::Checkpoint& cp : lab.file.checkpoints) {
-        bool render = false;
+        bool render = false, depth = false;
         for (const json& check : cp.checks) {
             const std::string kind = check["kind"];
             render = render ||
                      (what == PlanFor::Grading ? kRenderKinds.count(kind) > 0 : kind == "image");
+            depth =
+                depth || (what == PlanFor::Grading && kind == "probe" && check.contains("depth"));
         }
         if (render) {
             auto [width, height] = render_size(cp);
-            plan.renders.push_back({cp.name, width, height});
-            plan.job["renders"].push_back(
-                {{"name", cp.name}, {"params", cp.params}, {"width", width}, {"height", height}});
+            plan.renders.push_back({cp.name, width, height, depth});
+            plan.job["renders"].push_back({{"name", cp.name},
+                                           {"params", cp.params},
+                                           {"width", width},
+                                           {"height", height},
+                                           {"depth", depth}});
         }
         if (what != PlanFor::Grading) continue;
         for (size_t i = 0; i < cp.checks.size(); ++i) {

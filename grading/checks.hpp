@@ -54,6 +54,7 @@ void validate_checks(const LabData& lab);
 struct RenderPlan {
     std::string checkpoint;
     int width = 512, height = 512;
+    bool depth = false;  // a check reads the depth buffer: the child writes NAME.pfm
 };
 struct UnitCase {
     std::string id;  // key in units.json
@@ -78,10 +79,10 @@ enum class PlanFor {
 };
 LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what);
 
-// NAME.png as the child wrote it: a regular file within its size limit, a PNG
-// of the planned size; else false and why.
+// NAME.pam as the child wrote it: a regular file within its size limit, a
+// PAM of the planned size; else false and why.
 bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Image& image,
-                   std::string& why, std::string* png_bytes = nullptr);
+                   std::string& why);
 
 // "shader error in shaders/04_geometry/explode.geom" when the child reports
 // programs that failed to build (child.json's "shader_errors"); else empty.

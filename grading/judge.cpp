@@ -50,13 +50,12 @@ public:
     Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& out_dir,
           const std::string& lab)
         : outputs_(outputs), plan_(plan) {
-        std::string png;
-        has_color_ = read_rendered(outputs, plan, color_, color_why_, &png);
+        has_color_ = read_rendered(outputs, plan, color_, color_why_);
         if (has_color_) {
-            // The bytes that decoded to exactly the asked size, kept as they
-            // are: encoding the image again would cost more than grading it.
+            // The one PNG of the frame, for the reports (and written on the
+            // grading worker's thread, so --jobs spreads the encoding).
             rendered_ = lab + "/" + plan.checkpoint + ".png";
-            report::write_text_file(out_dir + "/" + rendered_, png);
+            fw::write_png(out_dir + "/" + rendered_, color_);
         }
     }
     const std::string& rendered() const { return rendered_; }

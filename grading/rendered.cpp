@@ -1,6 +1,7 @@
-// A checkpoint's frame as the child wrote it (NAME.png), read with the
-// suspicion due to anything a submission produced: size-limited, the PNG
-// header checked before decoding, decoded from the bytes read once.
+// A checkpoint's frame as the child wrote it (NAME.pam: raw pixels, see
+// framework/image_pam.cpp), read with the suspicion due to anything a
+// submission produced: size-limited, the header checked before anything else,
+// decoded from the bytes read once.
 #include <cstdio>
 
 #include "framework/error.hpp"
@@ -10,7 +11,7 @@ namespace grading {
 
 namespace {
 
-// Shown when a file does not start like a PNG: its first bytes, escaped.
+// Shown when a file does not start like a PAM: its first bytes, escaped.
 std::string first_bytes(const std::string& bytes) {
     std::string s;
     for (size_t i = 0; i < bytes.size() && i < 16; ++i) {
@@ -25,19 +26,18 @@ std::string first_bytes(const std::string& bytes) {
 }  // namespace
 
 bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Image& image,
-                   std::string& why, std::string* png_bytes) {
-    const std::string name = render.checkpoint + ".png";
-    // An uncompressed PNG: 4 bytes a pixel, a filter byte a row, chunk overhead.
-    const std::uint64_t limit =
-        std::uint64_t(render.width) * render.height * 4 + render.height + kMiB;
+                   std::string& why) {
+    const std::string name = render.checkpoint + ".pam";
+    // 4 bytes a pixel and a header of a few lines.
+    const std::uint64_t limit = std::uint64_t(render.width) * render.height * 4 + 1024;
     std::string bytes;
     if (!outputs.read(name, limit, bytes, why)) return false;
     int w = 0, h = 0;
-    if (!fw::png_header_size(bytes, w, h)) {
-        why = name + " is not a PNG: it starts with " + first_bytes(bytes);
+    if (!fw::pam_header_size(bytes, w, h)) {
+        why = name + " is not a PAM file: it starts with " + first_bytes(bytes);
         return false;
     }
-    // The size in the header, checked before decoding anything.
+    // The size in the header, checked before anything else.
     if (w != render.width || h != render.height) {
         why = name + " is " + std::to_string(w) + "x" + std::to_string(h) +
               ", but course asked for " + std::to_string(render.width) + "x" +
@@ -47,12 +47,11 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
     try {
         // Decoded from the bytes read (and size-checked) above, never from the
         // file again: a process the child left behind could have replaced it.
-        image = fw::decode_png(bytes, name);
+        image = fw::decode_pam(bytes, name);
     } catch (const fw::Error& e) {
-        why = name + " is not a PNG: " + e.what();
+        why = e.what();
         return false;
     }
-    if (png_bytes) *png_bytes = std::move(bytes);
     return true;
 }
 

@@ -17,6 +17,8 @@ packages=(
   libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   libglfw3-dev libimgui-dev xvfb xauth
   libglm-dev libstb-dev doctest-dev nlohmann-json3-dev libcli11-dev
+  # PNG encoding (libspng), and libpng for the encoder benchmark (bench/bench_png).
+  libspng-dev libpng-dev
   # The format test (scripts/check-format.sh); any version from Debian 12's 14 on.
   clang-format
 )

@@ -36,8 +36,9 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     const json given = job.value("params", json::object());
     for (const auto& [key, value] : given.items()) params.set_json(key, value);
     RenderOutput out = renderer.render(params, job.value("width", 512), job.value("height", 512));
-    write_png(base + ".png", out.color);
-    write_pfm(base + ".pfm", out.depth);
+    // Raw pixels: course judges them and encodes only what a report shows.
+    write_pam(base + ".pam", out.color);
+    if (job.value("depth", false)) write_pfm(base + ".pfm", out.depth);
     write_json(base + ".stats.json", out.stats);
 }
 

@@ -1,4 +1,4 @@
-// Image files (PNG, PFM) and the fuzzy comparison behind the `image` check.
+// Image files (PNG, PAM, PFM) and the fuzzy comparison behind the `image` check.
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
@@ -73,6 +73,81 @@ TEST_CASE("PNG round trip is pixel exact and stores the bottom row last") {
     CHECK(p[2] == 33);
     CHECK(p[3] == 44);
     stbi_image_free(raw);
+}
+
+TEST_CASE("PNG: a whole frame of noise and gradients round trips exactly") {
+    // Every filter and both of zlib's block kinds get used on such a frame.
+    Image img(512, 384);
+    unsigned seed = 12345;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            seed = seed * 1103515245u + 12345u;
+            const bool noisy = (x / 64 + y / 64) % 2 == 0;
+            img.at(x, y) = {std::uint8_t(noisy ? seed >> 24 : x / 2), std::uint8_t(y / 2),
+                            std::uint8_t(noisy ? seed >> 16 : 128), std::uint8_t(noisy ? 255 : x)};
+        }
+    const std::string bytes = fw::encode_png(img);
+    int w = 0, h = 0;
+    REQUIRE(fw::png_header_size(bytes, w, h));
+    CHECK(w == 512);
+    CHECK(h == 384);
+    const Image back = fw::decode_png(bytes, "noise");
+    CHECK(back.pixels == img.pixels);
+}
+
+TEST_CASE("PAM round trip is exact, top row first, with the header of docs/contract.md") {
+    Image img(3, 2);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x) img.at(x, y) = {std::uint8_t(x), std::uint8_t(y), 9, 255};
+    img.at(2, 1) = {11, 22, 33, 44};  // the top row's last pixel
+    const std::string bytes = fw::encode_pam(img);
+    const std::string header =
+        "P7\nWIDTH 3\nHEIGHT 2\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n";
+    REQUIRE(bytes.size() == header.size() + 3 * 2 * 4);
+    CHECK(bytes.compare(0, header.size(), header) == 0);
+    // The first row in the file is the top one: its third pixel is (11, 22, 33, 44).
+    CHECK(bytes.substr(header.size() + 8, 4) == "\x0b\x16\x21\x2c");
+    CHECK(fw::decode_pam(bytes, "t.pam").pixels == img.pixels);
+    int w = 0, h = 0;
+    CHECK(fw::pam_header_size(bytes, w, h));
+    CHECK(w == 3);
+    CHECK(h == 2);
+    const std::string path = fw::test::out_dir() + "/t.pam";
+    fw::write_pam(path, img);
+    CHECK(fw::test::read_text(path) == bytes);
+}
+
+TEST_CASE("decode_pam refuses anything but the exact header and size, naming the file") {
+    const std::string good = fw::encode_pam(Image(2, 2, kRed));
+    const std::string pixels = good.substr(good.size() - 16);
+    auto header = [](const std::string& lines) { return "P7\n" + lines + "ENDHDR\n"; };
+    const std::string fields = "DEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\n";
+    const struct {
+        std::string bytes, why;
+    } bad[] = {
+        {"P6\n2 2\n255\n" + pixels, "not a PAM file"},
+        {header("WIDTH 2\nHEIGHT 2\n" + fields) + pixels + "x",
+         "needs 16 bytes of pixels; the file has 17"},
+        {header("WIDTH 2\nHEIGHT 2\n" + fields) + pixels.substr(1), "the file has 15"},
+        {header("WIDTH 2\nHEIGHT 2\nWIDTH 2\n" + fields) + pixels, "WIDTH given twice"},
+        {header("WIDTH 2\n" + fields) + pixels, "needs WIDTH, HEIGHT"},
+        {header("WIDTH 0\nHEIGHT 2\n" + fields), "WIDTH \"0\" is not a size"},
+        {header("WIDTH 70000\nHEIGHT 2\n" + fields), "70000x2 is over the limit of 65536"},
+        {header("WIDTH -2\nHEIGHT 2\n" + fields), "WIDTH \"-2\" is not a size"},
+        {header("WIDTH 2\nHEIGHT 2\nDEPTH 3\nMAXVAL 255\nTUPLTYPE RGB\n") + pixels,
+         "only 8-bit RGB_ALPHA"},
+        {header("WIDTH 2\nHEIGHT 2\n# a comment\n" + fields) + pixels, "unexpected header line"},
+        {"P7\nWIDTH 2\nHEIGHT 2\n" + fields + std::string(600, 'x'), "without an ENDHDR"},
+    };
+    for (const auto& b : bad) {
+        CAPTURE(b.why);
+        const std::string message = fw::test::thrown([&] { fw::decode_pam(b.bytes, "frame.pam"); });
+        CHECK(message.find("'frame.pam'") != std::string::npos);
+        CHECK(message.find(b.why) != std::string::npos);
+    }
+    int w = 0, h = 0;
+    CHECK_FALSE(fw::pam_header_size("garbage", w, h));
+    CHECK_FALSE(fw::pam_header_size(bad[5].bytes, w, h));
 }
 
 TEST_CASE("read_png converts grey and RGB files to RGBA") {

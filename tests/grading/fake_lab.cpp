@@ -8,10 +8,10 @@
 //   spew        writes to stdout without end
 //   bigfile     writes one file past course's per-file limit
 //   fill        writes 1 MiB files without end (course's work directory cap)
-//   garbage     text where the PNGs, depth, stats and units.json belong; the
-//               first PNG has a valid header claiming 100000 x 100000 pixels
+//   garbage     text where the frames, depth, stats and units.json belong; the
+//               first frame has a valid header claiming 100000 x 100000 pixels
 //   liar        black frames, stats and units.json claiming a perfect score
-//   symlink     each NAME.png a link to course's reference (FAKE_LAB_REFERENCES)
+//   symlink     each NAME.pam a link to course's reference (FAKE_LAB_REFERENCES)
 //   wrong_unit  the real lab's outputs, with every unit result changed
 //   snoop       tries to read FAKE_LAB_SNOOP_READ and write into
 //               FAKE_LAB_SNOOP_WRITE, prints what happened, exits 3
@@ -122,14 +122,12 @@ int main(int argc, char** argv) {
         for (const json& r : renders) {
             const std::string base = out + "/" + r.value("name", "");
             if (first) {
-                // Signature and IHDR of a 100000 x 100000 image, then nothing.
-                const unsigned char header[] = {
-                    0x89, 'P', 'N', 'G',  '\r', '\n', 0x1a, '\n', 0,    0, 0, 13, 'I', 'H', 'D',
-                    'R',  0,   1,   0x86, 0xa0, 0,    1,    0x86, 0xa0, 8, 6, 0,  0,   0};
-                std::ofstream(base + ".png", std::ios::binary)
-                    .write(reinterpret_cast<const char*>(header), sizeof header);
+                // The header of a 100000 x 100000 frame, then nothing.
+                write_text(base + ".pam",
+                           "P7\nWIDTH 100000\nHEIGHT 100000\nDEPTH 4\nMAXVAL 255\n"
+                           "TUPLTYPE RGB_ALPHA\nENDHDR\n");
             } else {
-                write_text(base + ".png", "garbage instead of a PNG");
+                write_text(base + ".pam", "garbage instead of a PAM");
             }
             first = false;
             write_text(base + ".pfm", "garbage");
@@ -139,7 +137,7 @@ int main(int argc, char** argv) {
     } else if (mode == "liar") {
         for (const json& r : renders) {
             const std::string base = out + "/" + r.value("name", "");
-            fw::write_png(base + ".png",
+            fw::write_pam(base + ".pam",
                           fw::Image(r.value("width", 512), r.value("height", 512), {0, 0, 0, 255}));
             write_text(base + ".stats.json", json{{"params", r.value("params", json::object())},
                                                   {"passed", true},
@@ -155,9 +153,9 @@ int main(int argc, char** argv) {
                    json{{"complete", true}, {"all_checks_passed", true}}.dump());
     } else if (mode == "symlink") {
         for (const json& r : renders) {
-            const std::string name = r.value("name", "") + ".png";
-            if (symlink((env("FAKE_LAB_REFERENCES") + "/" + name).c_str(),
-                        (out + "/" + name).c_str()) != 0)
+            const std::string name = r.value("name", "");
+            if (symlink((env("FAKE_LAB_REFERENCES") + "/" + name + ".png").c_str(),
+                        (out + "/" + name + ".pam").c_str()) != 0)
                 std::perror("fake_lab: symlink");
         }
     } else if (mode == "wrong_unit") {
