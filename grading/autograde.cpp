@@ -185,7 +185,25 @@ public:
             return;
         }
         private_data();
-        if (place_submitted_files() && build_lab()) grade();
+        if (timed("copying the submitted files", [this] { return place_submitted_files(); }) &&
+            timed("building lab", [this] { return build_lab(); }))
+            timed("grading", [this] {
+                grade();
+                return true;
+            });
+    }
+
+    // Runs one step and says in the log how long it took (the figures of
+    // bench/bench_gradescope.sh, and a hint for staff when grading is slow).
+    template <class Step>
+    bool timed(const char* what, Step step) {
+        const auto start = std::chrono::steady_clock::now();
+        const bool ok = step();
+        std::printf(
+            "%s%s took %.1f s\n", layout_.prefix.c_str(), what,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        std::fflush(stdout);
+        return ok;
     }
 
     // Reports that fail every check with `reason` and the tail of `log` ("":

@@ -24,9 +24,10 @@ packages=(
 )
 # What only the tests need (scripts/test.sh sets LAB_SETUP_TESTS=1), so that
 # grading, and the autograders' images, go without it: a browser, for the
-# tests that look at the reports as a student sees them.
+# tests that look at the reports as a student sees them, and a compiler
+# cache, which the tests that build copies of the repository share.
 if [ "${LAB_SETUP_TESTS:-0}" = 1 ]; then
-  packages+=(chromium)
+  packages+=(chromium ccache)
 fi
 
 missing=()

@@ -97,14 +97,8 @@ std::string set_up(Autograder& ag) {
     // Gradescope copies run_autograder to /autograder and runs it from there.
     fs::copy_file(source / "run_autograder", ag.root / "run_autograder");
 
-    // Packages are present here; ccache, when installed, keeps re-runs quick.
-    std::string env = "SKIP_APT=1";
-    if (fw::test::run_command("command -v ccache").exit_code == 0)
-        env +=
-            " CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache "
-            "CCACHE_NOHASHDIR=1 CCACHE_BASEDIR=" +
-            shell_quote(source.string());
-    r = fw::test::run_command(environment(ag, env) + "bash " +
+    // Packages are present here.
+    r = fw::test::run_command(environment(ag, "SKIP_APT=1 " + ccache_setup_env(source)) + "bash " +
                               shell_quote((source / "setup.sh").string()));
     std::printf("[%5.1f s] setup.sh: exit %d\n", seconds_since(start), r.exit_code);
     if (r.exit_code != 0) {
@@ -115,6 +109,13 @@ std::string set_up(Autograder& ag) {
 }
 
 }  // namespace
+
+std::string ccache_setup_env(const fs::path& source) {
+    if (fw::test::run_command("command -v ccache").exit_code != 0) return "";
+    return "CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache "
+           "CCACHE_NOHASHDIR=1 CCACHE_BASEDIR=" +
+           shell_quote(source.string()) + " ";
+}
 
 std::string lab_of(const json& test) {
     const std::string name = test.value("name", "");

@@ -52,6 +52,12 @@ struct Autograder {
 // The autograder, set up on first use; a failed set-up fails the test case.
 Autograder& autograder();
 
+// For a setup.sh that builds the tree at `source`: the environment ("NAME=value
+// ... ") that makes its build go through ccache, named by paths inside the
+// tree, so that set-ups of other copies share the cache's objects; "" when
+// ccache is not installed.
+std::string ccache_setup_env(const fs::path& source);
+
 // Builds the submission folder from `files` (path in the submission -> text)
 // and runs run_autograder on it, with `env` ("NAME=value ...") added.
 Run submit(const Autograder& ag, const std::string& what,

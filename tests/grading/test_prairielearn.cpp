@@ -23,6 +23,7 @@
 #include "framework/checkpoints.hpp"
 #include "framework/text.hpp"
 #include "grading/release.hpp"
+#include "tests/grading/gradescope_support.hpp"
 #include "tests/grading/prairielearn_support.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -77,7 +78,8 @@ std::string set_up(Grader& g) {
     if (g.student_files.empty()) return "student_files.txt is empty";
 
     // The Dockerfile's step, with the packages present.
-    r = fw::test::run_command("env -u CI SKIP_APT=1 AUTOGRADER_USER=" + g.user + " bash " +
+    r = fw::test::run_command("env -u CI SKIP_APT=1 AUTOGRADER_USER=" + g.user + " " +
+                              gradescope_test::ccache_setup_env(g.course) + "bash " +
                               shell_quote((g.course / "setup.sh").string()));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -45,9 +45,13 @@ void build_tree(const fs::path& source, const std::string& targets) {
     REQUIRE_MESSAGE(rebuild_tree(source, targets), "building " << targets << " in " << source);
 }
 
+std::string ccache_env(const fs::path& source) {
+    return "CCACHE_BASEDIR=" + shell_quote(source.string()) + " CCACHE_NOHASHDIR=1 ";
+}
+
 bool rebuild_tree(const fs::path& source, const std::string& targets) {
-    return run("cmake --build " + shell_quote((source / "build").string()) + " -j" + jobs() +
-               " --target " + targets)
+    return run(ccache_env(source) + "cmake --build " + shell_quote((source / "build").string()) +
+               " -j" + jobs() + " --target " + targets)
                .exit_code == 0;
 }
 

@@ -32,6 +32,11 @@ std::string jobs();
 // Fails the test case when either step fails.
 void build_tree(const fs::path& source, const std::string& targets);
 
+// The environment under which ccache, when the build uses it, names the
+// files of the tree at `source` by their paths inside it: every copy of the
+// repository then shares the cache's objects ("NAME=value ... ").
+std::string ccache_env(const fs::path& source);
+
 // Builds `targets` of a tree that build_tree() configured; whether it built.
 bool rebuild_tree(const fs::path& source, const std::string& targets);
 

@@ -11,9 +11,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <thread>
 
 #include "framework/text.hpp"
+#include "tests/grading/tree_support.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -76,18 +76,6 @@ void copy_lab(const fs::path& tree) {
                 .exit_code == 0);
 }
 
-void build(const fs::path& tree) {
-    const std::string build = shell_quote((tree / "build").string());
-    std::string configure = "cmake -S " + shell_quote(tree.string()) + " -B " + build +
-                            " -DCMAKE_BUILD_TYPE=Release -DLAB_WERROR=ON";
-    if (fw::test::run_command("command -v ccache").exit_code == 0)
-        configure += " -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache";
-    REQUIRE(run(configure).exit_code == 0);
-    const std::string jobs = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
-    REQUIRE(run("cmake --build " + build + " -j" + jobs + " --target lab course test_warmup")
-                .exit_code == 0);
-}
-
 }  // namespace
 
 TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, releases, tests") {
@@ -97,7 +85,7 @@ TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, re
     copy_lab(tree);
     // Only the two new folders: no other file names the lab.
     CHECK(changes(tree) == "?? labs/07_warmup/\n?? shaders/07_warmup/\n");
-    build(tree);
+    tree_test::build_tree(tree, "lab course test_warmup");
     const std::string bin = shell_quote((tree / "build/bin").string()) + "/";
 
     // Listed, with its number and id from the folder's name.
