@@ -104,6 +104,7 @@ void check_encodable(const Image& img, const char* format) {
 // small (several times stb_image_write's speed, and smaller files).
 std::string encode_png(const Image& img) {
     check_encodable(img, "PNG");
+    static_assert(sizeof(Rgba8) == 4, "Rgba8 must be 4 tightly packed bytes");
     std::vector<Rgba8> top_first = flip_rows(img.pixels, img.width, img.height);
     const std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> ctx(spng_ctx_new(SPNG_CTX_ENCODER),
                                                              spng_ctx_free);

@@ -8,7 +8,6 @@
 // header lines, each once, sizes within 1..65536, and exactly the bytes the
 // sizes call for. (pam_header_size reports any size the header states, so
 // that a caller can say which size it expected instead.)
-#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <map>

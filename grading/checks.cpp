@@ -250,7 +250,8 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
         }
         if (render) {
             auto [width, height] = render_size(cp);
-            plan.renders.push_back({cp.name, width, height, depth});
+            plan.renders.push_back({cp.name, width, height});
+            // "depth": a check reads the depth buffer, so the child writes NAME.pfm.
             plan.job["renders"].push_back({{"name", cp.name},
                                            {"params", cp.params},
                                            {"width", width},

@@ -54,7 +54,6 @@ void validate_checks(const LabData& lab);
 struct RenderPlan {
     std::string checkpoint;
     int width = 512, height = 512;
-    bool depth = false;  // a check reads the depth buffer: the child writes NAME.pfm
 };
 struct UnitCase {
     std::string id;  // key in units.json
