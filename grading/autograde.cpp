@@ -304,6 +304,12 @@ private:
             command.insert(command.end(), {"--run-as", options_.user});
             shown += " --run-as " + options_.user;
         }
+        // The shader cache setup.sh warmed beside course (root's, like course).
+        const fs::path cache = fs::path(own_path()).parent_path() / "shader-cache";
+        if (fs::is_directory(cache)) {
+            command.insert(command.end(), {"--shader-cache", cache.string()});
+            shown += " --shader-cache " + cache.filename().string();
+        }
         if (layout_.format == ResultsFormat::PrairieLearn) {
             command.insert(command.end(), {"--format", "prairielearn"});
             shown += " --format prairielearn";

@@ -4,6 +4,8 @@
 // bless, look at them, commit them. The backend follows the same rule as
 // `course grade` (--backend, else $LAB_BACKEND, else auto: EGL, then OSMesa);
 // the two backends render every checkpoint alike (tests/tools/test_backends).
+// `course warm-cache` runs the same children to fill a Mesa shader cache.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -72,6 +74,36 @@ int bless_command(const BlessOptions& options) {
                         backend.c_str());
         }
     }
+    return 0;
+}
+
+int warm_cache_command(const WarmCacheOptions& options) {
+    const std::vector<LabData> labs = select_labs(discover_labs(source_root()), options.labs);
+    for (const LabData& lab : labs) validate_checks(lab);
+    const std::string lab_binary = resolve_lab_binary(options.lab_binary);
+    std::error_code ec;
+    std::filesystem::create_directories(options.dir, ec);
+    if (ec || !std::filesystem::is_directory(options.dir))
+        throw fw::UsageError("cannot create the shader cache directory '" + options.dir +
+                             "': " + ec.message());
+    ChildLimits limits;
+    limits.timeout_seconds = 300.0;
+    const ShaderCache cache{std::filesystem::absolute(options.dir).string(), /*shared=*/true};
+    for (const LabData& lab : labs) {
+        const LabPlan plan = plan_lab(lab, 0, PlanFor::Grading);
+        LabChild child =
+            run_lab_child(lab_binary, plan.job, options.backend, limits, nullptr, cache);
+        if (!child.run.ok()) {
+            std::fprintf(stderr, "course: warm-cache: the lab child for '%s' %s\n%s",
+                         lab.id.c_str(), child.run.status.c_str(),
+                         indented_tail(child.run.log, 20).c_str());
+            return 2;
+        }
+        std::printf("warmed %s (%zu frames, %.2f s)\n", lab.id.c_str(), plan.renders.size(),
+                    child.run.seconds);
+    }
+    std::printf("shader cache in %s: %s\n", cache.dir.c_str(),
+                mib_text(directory_bytes(cache.dir)).c_str());
     return 0;
 }
 

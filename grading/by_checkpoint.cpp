@@ -174,15 +174,23 @@ std::string lab_number(const LabResult& lab, size_t index) {
 std::string base64(const std::string& bytes) {
     static const char alphabet[] =
         "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        const size_t n = std::min<size_t>(3, bytes.size() - i);
-        std::uint32_t group = 0;
-        for (size_t k = 0; k < 3; ++k)
-            group = (group << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-        // n bytes make n + 1 characters; '=' pads the group to four.
-        for (size_t k = 0; k < 4; ++k) out += k <= n ? alphabet[(group >> (18 - 6 * k)) & 63] : '=';
+    const auto* in = reinterpret_cast<const unsigned char*>(bytes.data());
+    const size_t n = bytes.size(), whole = n / 3 * 3;
+    std::string out((n + 2) / 3 * 4, '=');
+    char* o = out.data();
+    for (size_t i = 0; i < whole; i += 3, o += 4) {
+        const std::uint32_t g = (in[i] << 16) | (in[i + 1] << 8) | in[i + 2];
+        o[0] = alphabet[g >> 18];
+        o[1] = alphabet[(g >> 12) & 63];
+        o[2] = alphabet[(g >> 6) & 63];
+        o[3] = alphabet[g & 63];
+    }
+    // The last one or two bytes make two or three characters; '=' pads the rest.
+    if (const size_t rest = n - whole) {
+        const std::uint32_t g = (in[whole] << 16) | (rest == 2 ? in[whole + 1] << 8 : 0);
+        o[0] = alphabet[g >> 18];
+        o[1] = alphabet[(g >> 12) & 63];
+        if (rest == 2) o[2] = alphabet[(g >> 6) & 63];
     }
     return out;
 }

@@ -161,9 +161,16 @@ WorkDir::WorkDir(const RunAsUser* user) {
 }
 
 void WorkDir::hand_over() {
-    if (user_ && chown(path_.c_str(), user_->uid, user_->gid) != 0)
-        throw fw::Error("cannot give the work directory '" + path_ + "' to user '" + user_->name +
-                        "': " + std::strerror(errno));
+    if (!user_) return;
+    auto give = [this](const std::string& path) {
+        if (lchown(path.c_str(), user_->uid, user_->gid) != 0)
+            throw fw::Error("cannot give '" + path + "' in the work directory to user '" +
+                            user_->name + "': " + std::strerror(errno));
+    };
+    give(path_);
+    // Nothing of the user's is in it yet: these are course's own files.
+    for (const fs::directory_entry& e : fs::recursive_directory_iterator(path_))
+        give(e.path().string());
 }
 
 WorkDir::~WorkDir() {
@@ -189,22 +196,25 @@ rlim_t cpu_seconds_for(const ChildLimits& limits) {
 // and LOGNAME those of `user`), and its limits.
 struct ChildStart {
     ChildStart(const std::vector<std::string>& args, const std::string& work_dir,
-               const ChildLimits& child_limits, const RunAsUser* run_as)
+               const ChildLimits& child_limits, const RunAsUser* run_as,
+               const std::vector<std::string>& env)
         : dir(work_dir), limits(child_limits), user(run_as) {
         for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
         argv.push_back(nullptr);
-        for (char** e = environ; *e; ++e) {
-            std::string entry = *e;
-            if (user && (entry.rfind("HOME=", 0) == 0 || entry.rfind("USER=", 0) == 0 ||
-                         entry.rfind("LOGNAME=", 0) == 0))
-                continue;
-            env_store.push_back(entry);
-        }
+        std::vector<std::string> added = env;
         if (user) {
-            env_store.push_back("HOME=" + dir);
-            env_store.push_back("USER=" + user->name);
-            env_store.push_back("LOGNAME=" + user->name);
+            added.push_back("HOME=" + dir);
+            added.push_back("USER=" + user->name);
+            added.push_back("LOGNAME=" + user->name);
         }
+        auto replaced = [&added](const std::string& entry) {
+            for (const std::string& a : added)
+                if (entry.compare(0, a.find('=') + 1, a, 0, a.find('=') + 1) == 0) return true;
+            return false;
+        };
+        for (char** e = environ; *e; ++e)
+            if (!replaced(*e)) env_store.push_back(*e);
+        env_store.insert(env_store.end(), added.begin(), added.end());
         for (std::string& e : env_store) envp.push_back(e.data());
         envp.push_back(nullptr);
     }
@@ -342,8 +352,9 @@ std::string exit_status(int wait_status, const ChildStart& c) {
 }  // namespace
 
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
-                   const ChildLimits& limits, const RunAsUser* user) {
-    ChildStart start(argv, dir, limits, user);
+                   const ChildLimits& limits, const RunAsUser* user,
+                   const std::vector<std::string>& env) {
+    ChildStart start(argv, dir, limits, user, env);
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) throw fw::Error(std::string("pipe: ") + std::strerror(errno));
     start.devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);

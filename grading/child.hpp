@@ -57,6 +57,7 @@ public:
     WorkDir(const WorkDir&) = delete;
     WorkDir& operator=(const WorkDir&) = delete;
     const std::string& path() const { return path_; }
+    // Gives the directory, and everything course put in it, to the user.
     void hand_over();
 
 private:
@@ -64,9 +65,11 @@ private:
     const RunAsUser* user_ = nullptr;
 };
 
-// Runs argv[0] with argv in `dir` and waits for it within the limits.
+// Runs argv[0] with argv in `dir` and waits for it within the limits. `env`
+// ("NAME=value") is added to course's environment, replacing what it names.
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
-                   const ChildLimits& limits, const RunAsUser* user);
+                   const ChildLimits& limits, const RunAsUser* user,
+                   const std::vector<std::string>& env = {});
 
 // The files a finished child left, read with limits. Every failure is a
 // sentence fit for a check's output.
@@ -99,9 +102,20 @@ struct LabChild {
     ChildRun run;
     std::unique_ptr<ChildOutputs> outputs;
 };
+//
+// Mesa's shader cache: with `shader_cache` empty, the child uses Mesa's default
+// (under its HOME, which --run-as makes the fresh work directory: always
+// cold). Otherwise it is a single-file Mesa cache directory (course
+// warm-cache), and the child starts from a private copy of it, so that no lab
+// can change what another lab's shaders compile to; with `shared`, the
+// child writes into the directory itself (only for warming it).
+struct ShaderCache {
+    std::string dir;
+    bool shared = false;
+};
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
-                       const std::string& backend, const ChildLimits& limits,
-                       const RunAsUser* user);
+                       const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
+                       const ShaderCache& shader_cache = {});
 
 // "8 MiB": a byte count in whole MiB, for messages about limits.
 std::string mib_text(std::uint64_t bytes);

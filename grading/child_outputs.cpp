@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "framework/error.hpp"
@@ -75,8 +76,8 @@ bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::strin
 }
 
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
-                       const std::string& backend, const ChildLimits& limits,
-                       const RunAsUser* user) {
+                       const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
+                       const ShaderCache& shader_cache) {
     LabChild child;
     child.dir = std::make_unique<WorkDir>(user);
     const std::string dir = child.dir->path();
@@ -87,10 +88,25 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
         std::ofstream out(job_path);
         if (!(out << job.dump(1) << "\n")) throw fw::Error("cannot write '" + job_path + "'");
     }
+    std::vector<std::string> env;
+    if (!shader_cache.dir.empty()) {
+        std::string cache = shader_cache.dir;
+        if (!shader_cache.shared) {
+            cache = dir + "/shader-cache";
+            std::error_code ec;
+            std::filesystem::copy(shader_cache.dir, cache, std::filesystem::copy_options::recursive,
+                                  ec);
+            if (ec)
+                throw fw::Error("cannot copy the shader cache '" + shader_cache.dir +
+                                "' into the lab's work directory: " + ec.message());
+        }
+        env = {"MESA_SHADER_CACHE_DIR=" + cache, "MESA_DISK_CACHE_SINGLE_FILE=1",
+               "MESA_SHADER_CACHE_DISABLE=false"};
+    }
     child.dir->hand_over();
     std::vector<std::string> argv = {lab_binary, "grade-child", "--job", job_path, "--out", dir};
     if (!backend.empty()) argv.insert(argv.end(), {"--backend", backend});
-    child.run = run_child(argv, dir, limits, user);
+    child.run = run_child(argv, dir, limits, user, env);
     child.outputs = std::make_unique<ChildOutputs>(dir, child.run, limits);
     if (child.run.ok() && !child.outputs->too_large().empty())
         child.run.status = child.outputs->too_large();

@@ -25,6 +25,9 @@ struct GradeOptions {
     std::string format = "gradescope";
     std::string results;
     bool progress = true;  // a line per lab as it finishes
+    // --shader-cache: a Mesa shader cache made by `course warm-cache`; each
+    // lab's child starts from its own copy. Empty: Mesa's default.
+    std::string shader_cache;
 };
 int grade_command(const GradeOptions& options);
 
@@ -34,6 +37,17 @@ struct BlessOptions {
     std::string backend;  // as for grade: empty is $LAB_BACKEND or auto (EGL, then OSMesa)
 };
 int bless_command(const BlessOptions& options);
+
+// `course warm-cache`: renders every graded frame of the labs through the
+// same children as grade, with Mesa's shader cache in `dir`, so that a later
+// `course grade --shader-cache DIR` starts warm.
+struct WarmCacheOptions {
+    std::vector<std::string> labs;  // empty: all
+    std::string lab_binary;
+    std::string backend;
+    std::string dir;
+};
+int warm_cache_command(const WarmCacheOptions& options);
 
 int release_command(const std::string& out_dir);
 int gradescope_command(const std::string& out_dir);

@@ -226,6 +226,13 @@ int grade_command(const GradeOptions& options) {
     for (const LabData& lab : labs) plans.push_back(plan_lab(lab, seed, PlanFor::Grading));
     ChildLimits limits;
     limits.timeout_seconds = options.timeout_seconds;
+    ShaderCache cache;
+    if (!options.shader_cache.empty()) {
+        if (!fs::is_directory(options.shader_cache))
+            throw fw::UsageError("--shader-cache " + options.shader_cache +
+                                 ": no such directory; make it with course warm-cache");
+        cache.dir = fs::absolute(options.shader_cache).string();
+    }
 
     GradeRun run;
     run.backend = backend_name(options);
@@ -233,7 +240,8 @@ int grade_command(const GradeOptions& options) {
     // --jobs workers take labs in order; each lab is one child.
     std::mutex print_mutex;
     parallel_for(labs.size(), options.jobs, [&](size_t i) {
-        LabChild child = run_lab_child(lab_binary, plans[i].job, options.backend, limits, as);
+        LabChild child =
+            run_lab_child(lab_binary, plans[i].job, options.backend, limits, as, cache);
         LabResult& result = run.labs[i];
         result.lab = labs[i].id;
         result.status = child.run.status;

@@ -1,6 +1,8 @@
 // `course`: the trusted grading and course tool (docs/contract.md, `course`). It
 // never links lab code: it runs the `lab` executable in child processes and
 // decides pass or fail from the data files and its own reference code.
+#include <malloc.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <functional>
@@ -35,6 +37,8 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     grade->add_option("--format", g.format, "What results.json holds (default gradescope)")
         ->check(CLI::IsMember({"gradescope", "prairielearn"}));
     grade->add_option("--results", g.results, "Write results.json here (default: into --out)");
+    grade->add_option("--shader-cache", g.shader_cache,
+                      "Start each lab from a copy of this Mesa shader cache (course warm-cache)");
     return {grade, [&g] { return grading::grade_command(g); }};
 }
 
@@ -44,6 +48,16 @@ Command add_bless(CLI::App& app, grading::BlessOptions& b) {
     bless->add_option("--lab", b.lab_binary, "The lab executable (default: beside course)");
     bless->add_option("--backend", b.backend, kBackendHelp);
     return {bless, [&b] { return grading::bless_command(b); }};
+}
+
+Command add_warm_cache(CLI::App& app, grading::WarmCacheOptions& w) {
+    auto* warm = app.add_subcommand("warm-cache",
+                                    "Fill a Mesa shader cache for course grade --shader-cache");
+    warm->add_option("DIR", w.dir, "The cache directory (created if missing)")->required();
+    warm->add_option("LAB", w.labs, "Labs to render (default: all)");
+    warm->add_option("--lab", w.lab_binary, "The lab executable (default: beside course)");
+    warm->add_option("--backend", w.backend, kBackendHelp);
+    return {warm, [&w] { return grading::warm_cache_command(w); }};
 }
 
 Command add_release(CLI::App& app, std::string& out) {
@@ -107,14 +121,20 @@ int run_chosen(const std::vector<Command>& commands) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Frames are a megabyte each and come and go by the hundred: keep them
+    // in the heap rather than mapping and zeroing fresh pages for each.
+    mallopt(M_MMAP_THRESHOLD, 64 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
     CLI::App app{"course: grade the labs, bless references, release the student version"};
     app.require_subcommand(1);
     grading::GradeOptions grade;
     grading::BlessOptions bless;
+    grading::WarmCacheOptions warm;
     std::string release_out, gradescope_out, prairielearn_out;
     grading::AutogradeOptions autograde;
     const std::vector<Command> commands = {add_grade(app, grade),
                                            add_bless(app, bless),
+                                           add_warm_cache(app, warm),
                                            add_release(app, release_out),
                                            add_gradescope(app, gradescope_out),
                                            add_prairielearn(app, prairielearn_out),

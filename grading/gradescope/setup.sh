@@ -20,7 +20,17 @@ fi
 cmake --preset default -DLAB_WERROR=OFF >/dev/null
 cmake --build --preset default -j "$(nproc)" --target lab course
 
+# Mesa's shader cache, warmed once here by rendering every graded frame:
+# each lab's child starts from a private copy of it (course grade
+# --shader-cache), where it would otherwise compile every shader afresh.
+# `course autograde` uses the shader-cache/ beside the course it runs.
+warm_cache() {
+  "$1/course" warm-cache --lab "$source_dir/build/bin/lab" "$1/shader-cache" >/dev/null ||
+    echo "setup.sh: warming the shader cache failed; every submission will compile its shaders cold"
+}
+
 if [ "$(id -u)" -ne 0 ]; then
+  warm_cache "$source_dir/build/bin"
   echo "setup.sh: not root: no user '$user' and no permissions set; submitted code will run as $(id -un)"
   exit 0
 fi
@@ -42,5 +52,8 @@ for lab in "$source_dir"/labs/*/; do
 done
 install -d -m 0755 "$source_dir/course-bin"
 install -m 0755 "$source_dir/build/bin/course" "$source_dir/course-bin/course"
+rm -rf "$source_dir/course-bin/shader-cache"
+warm_cache "$source_dir/course-bin"
+chmod -R go-rwx "$source_dir/course-bin/shader-cache" 2>/dev/null || true
 chown -R "$user" "$source_dir/build"
 echo "setup.sh: built $source_dir/build; submitted code will be built and run as '$user'"

@@ -15,6 +15,9 @@
 //   wrong_unit  the real lab's outputs, with every unit result changed
 //   snoop       tries to read FAKE_LAB_SNOOP_READ and write into
 //               FAKE_LAB_SNOOP_WRITE, prints what happened, exits 3
+//   cache       writes into FAKE_LAB_REPORT where its Mesa shader cache is
+//               and whether it may write every file in it, plants a file
+//               there, then becomes the real lab
 // FAKE_LAB_MARK: a file the fake creates whenever it runs.
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -24,6 +27,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -166,6 +170,22 @@ int main(int argc, char** argv) {
             if (entry.contains("result")) nudge(entry["result"]);
         write_text(out + "/units.json", results.dump());
         return rc;
+    } else if (mode == "cache") {
+        const std::string dir = env("MESA_SHADER_CACHE_DIR");
+        const bool inside = !dir.empty() && dir.rfind(out + "/", 0) == 0;
+        int files = 0, writable = 0;
+        std::error_code ec;
+        for (const auto& e : std::filesystem::recursive_directory_iterator(dir, ec))
+            if (e.is_regular_file()) {
+                ++files;
+                writable += access(e.path().c_str(), R_OK | W_OK) == 0;
+            }
+        write_text(env("FAKE_LAB_REPORT"),
+                   "cache: " + dir + ", " + (inside ? "inside" : "outside") +
+                       " the work directory\ncache: " + std::to_string(writable) + " of " +
+                       std::to_string(files) + " files writable\n");
+        write_text(dir + "/planted.txt", "planted\n");
+        return run_real(argv);
     } else if (mode == "snoop") {
         snoop(env("FAKE_LAB_SNOOP_READ"), env("FAKE_LAB_SNOOP_WRITE"));
         return 3;

@@ -86,6 +86,10 @@ TEST_CASE("course grade: usage and set-up errors exit 2 and say what would fix t
     CHECK(g.exit_code == 2);
     fw::test::check_mentions(g.output, {"/nonexistent/lab", "--lab"});
 
+    g = grade("", "pipeline --shader-cache /nonexistent/cache", out);
+    CHECK(g.exit_code == 2);
+    fw::test::check_mentions(g.output, {"/nonexistent/cache", "course warm-cache"});
+
     if (geteuid() == 0) {
         g = grade("", "pipeline --run-as no_such_user_here", out);
         CHECK(g.exit_code == 2);

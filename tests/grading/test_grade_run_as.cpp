@@ -105,3 +105,41 @@ TEST_CASE("course grade --run-as: an output directory the user could write is re
     CHECK(r.exit_code == 2);
     fw::test::check_mentions(r.output, {"could write the output directory", out});
 }
+
+TEST_CASE("course grade --run-as nobody --shader-cache: each lab gets its own writable copy") {
+    skip_unless_possible();
+    const Staged st = stage();
+    const std::string tree = make_tree(st.dir + "/tree", false);
+    const std::string cache = st.dir + "/shader-cache";
+    const fw::test::CommandResult warm =
+        fw::test::run_command(st.env + " LAB_ROOT=" + tree + " " + course() + " warm-cache " +
+                              cache + " pipeline --lab " + st.lab);
+    INFO(warm.output);
+    REQUIRE(warm.exit_code == 0);
+    fw::test::check_mentions(warm.output, {"warmed pipeline", "shader cache in " + cache});
+    chmod(cache.c_str(), 0700);  // root's, as grading/gradescope/setup.sh leaves it
+    int seeded = 0;
+    for (const auto& e : fs::recursive_directory_iterator(cache)) seeded += e.is_regular_file();
+    REQUIRE(seeded > 0);
+
+    const std::string out = st.dir + "/report";
+    const std::string said = st.dir + "/said/cache.txt";  // where the fake, as nobody, may write
+    fs::create_directories(st.dir + "/said");
+    chmod((st.dir + "/said").c_str(), 0777);
+    Graded g = grade(st.env + " LAB_ROOT=" + tree +
+                         " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=cache FAKE_LAB_REPORT=" + said,
+                     "pipeline --run-as nobody --lab " + st.fake + " --shader-cache " + cache, out);
+    CHECK(g.exit_code == 0);
+    REQUIRE(g.results.is_object());
+    CHECK(g.results["score"] == g.results["max_score"]);
+    // The child's cache is a copy inside its own work directory, every file
+    // of it the user's to write; what it planted there never reaches the seed.
+    const std::string report = fw::test::read_text(said);
+    fw::test::check_mentions(
+        report, {"inside the work directory", "cache: " + std::to_string(seeded) + " of " +
+                                                  std::to_string(seeded) + " files writable"});
+    CHECK(!fs::exists(cache + "/planted.txt"));
+    int after = 0;
+    for (const auto& e : fs::recursive_directory_iterator(cache)) after += e.is_regular_file();
+    CHECK(after == seeded);
+}

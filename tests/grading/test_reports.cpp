@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "framework/image.hpp"
+#include "grading/by_checkpoint.hpp"
 #include "grading/report_text.hpp"
 #include "grading/reports.hpp"
 #include "tests/grading/report_fixture.hpp"
@@ -376,4 +377,18 @@ TEST_CASE("text from a child is cleaned for XML, HTML and JSON") {
     CHECK(grading::report::points(10.0) == "10");
     CHECK(grading::report::points(1.0 / 3.0) == "0.33");
     CHECK(grading::report::first_line("\n  \n  first  \nsecond") == "first");
+}
+
+TEST_CASE("base64 gives RFC 4648's test vectors, padding included") {
+    const std::pair<const char*, const char*> vectors[] = {{"", ""},
+                                                           {"f", "Zg=="},
+                                                           {"fo", "Zm8="},
+                                                           {"foo", "Zm9v"},
+                                                           {"foob", "Zm9vYg=="},
+                                                           {"fooba", "Zm9vYmE="},
+                                                           {"foobar", "Zm9vYmFy"}};
+    for (const auto& [text, encoded] : vectors) CHECK(grading::base64(text) == encoded);
+    std::string all;
+    for (int i = 0; i < 256; ++i) all += static_cast<char>(i);
+    CHECK(base64_decode(grading::base64(all)) == all);
 }
