@@ -21,7 +21,8 @@ LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
 
 LabRenderer::~LabRenderer() = default;
 
-RenderOutput LabRenderer::render(const ParamValues& params, int width, int height) {
+RenderOutput LabRenderer::render(const ParamValues& params, int width, int height, double time,
+                                 bool with_depth) {
     std::string problem = lab_->validate(params);
     if (!problem.empty()) throw UsageError("lab '" + registered_.info.id + "': " + problem);
     if (!framebuffer_ || framebuffer_->width() != width || framebuffer_->height() != height) {
@@ -39,7 +40,7 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
     primitives_->begin();
     elapsed_->begin();
     try {
-        lab_->draw(params, Frame{width, height, 0.0});
+        lab_->draw(params, Frame{width, height, time});
     } catch (...) {
         // The next frame starts clean: its queries can begin, and GL errors
         // this draw left are not blamed on it (the exception says what failed).
@@ -58,7 +59,7 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
 
     RenderOutput out;
     out.color = framebuffer_->read_color();
-    out.depth = framebuffer_->read_depth();
+    if (with_depth) out.depth = framebuffer_->read_depth();
     out.stats = {
         {"lab", registered_.info.id},
         {"params", params.to_json()},
@@ -71,7 +72,7 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
         {"primitives_generated", primitives_->result()},
         {"render_ms", render_ms},
         {"gpu_ms", static_cast<double>(elapsed_->result()) / 1e6},
-        {"lab_stats", lab_->stats(params, Frame{width, height, 0.0})},
+        {"lab_stats", lab_->stats(params, Frame{width, height, time})},
     };
     check_gl(("read-back of lab " + registered_.info.id).c_str());
     return out;

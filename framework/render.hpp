@@ -31,12 +31,17 @@ public:
     LabRenderer& operator=(const LabRenderer&) = delete;
 
     // One frame at width x height; throws UsageError for a size of zero or
-    // above the GL limit, or parameters the lab rejects.
-    RenderOutput render(const ParamValues& params, int width, int height);
+    // above the GL limit, or parameters the lab rejects. `time`: seconds for
+    // a lab that animates (Frame::time; 0 draws what lab render draws).
+    // Without `with_depth` the depth is not read back (RenderOutput::depth
+    // stays empty).
+    RenderOutput render(const ParamValues& params, int width, int height, double time = 0.0,
+                        bool with_depth = true);
 
     Lab& lab() { return *lab_; }
     // The lab's programs, those that failed to build included.
     const ProgramLibrary& programs() const { return programs_; }
+    ProgramLibrary& programs() { return programs_; }
 
 private:
     const RegisteredLab& registered_;

@@ -19,6 +19,8 @@ packages=(
   libglm-dev libstb-dev doctest-dev nlohmann-json3-dev libcli11-dev
   # PNG encoding (libspng), and libpng for the encoder benchmark (bench/bench_png).
   libspng-dev libpng-dev
+  # `lab serve`: HTTP and WebSocket (CivetWeb) and JPEG frames (libjpeg-turbo).
+  libcivetweb-dev libturbojpeg0-dev
   # The format test (scripts/check-format.sh); any version from Debian 12's 14 on.
   clang-format
 )

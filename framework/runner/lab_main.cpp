@@ -16,6 +16,7 @@
 #include "framework/lab.hpp"
 #include "framework/render.hpp"
 #include "framework/runner/grade_child.hpp"
+#include "framework/serve/server.hpp"
 #if LAB_HAVE_WINDOW
 #include "framework/window/window.hpp"
 #endif
@@ -239,6 +240,26 @@ Command add_run(CLI::App& app, RunArgs& a) {
     return {run, [&a] { run_in_window(a); }};
 }
 
+struct ServeArgs {
+    fw::ServeOptions options;
+    std::string size = "800x600";
+};
+
+Command add_serve(CLI::App& app, ServeArgs& a) {
+    auto* serve = app.add_subcommand(
+        "serve", "Serve the lab live in a browser page, rendered offscreen (no window needed)");
+    serve->add_option("LAB", a.options.lab, "Lab name")->required();
+    serve->add_option("--port", a.options.port, "TCP port (default 8080; 0: any free port)");
+    serve->add_option("--host", a.options.host,
+                      "Address to listen on (default 127.0.0.1: this machine only)");
+    serve->add_option("--size", a.size, "Frame size WxH until the page sets it (default 800x600)");
+    serve->add_option("--backend", a.options.backend, kBackendHelp);
+    return {serve, [&a] {
+                fw::parse_size(a.size, a.options.width, a.options.height);
+                fw::serve(a.options);
+            }};
+}
+
 // Runs the chosen command; errors print as `lab: error: ...` with the exit
 // status their type implies.
 int run_chosen(const std::vector<Command>& commands) {
@@ -259,7 +280,8 @@ int run_chosen(const std::vector<Command>& commands) {
 
 int main(int argc, char** argv) {
     CLI::App app{
-        "lab: the OpenGL labs. Render offscreen, open a window, list labs and checkpoints."};
+        "lab: the OpenGL labs. Render offscreen, open a window or a browser page, list labs and "
+        "checkpoints."};
     app.require_subcommand(1);
     bool list_json = false;
     CheckpointsArgs checkpoints;
@@ -267,12 +289,14 @@ int main(int argc, char** argv) {
     RenderCheckpointsArgs render_checkpoints_args;
     GradeChildArgs grade_child_args;
     RunArgs run_args;
+    ServeArgs serve_args;
     const std::vector<Command> commands = {add_list(app, list_json),
                                            add_checkpoints(app, checkpoints),
                                            add_render(app, render_args),
                                            add_render_checkpoints(app, render_checkpoints_args),
                                            add_grade_child(app, grade_child_args),
-                                           add_run(app, run_args)};
+                                           add_run(app, run_args),
+                                           add_serve(app, serve_args)};
 
     try {
         app.parse(argc, argv);

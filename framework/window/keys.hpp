@@ -7,19 +7,15 @@
 #include <vector>
 
 #include "framework/lab.hpp"
+#include "framework/shortcuts.hpp"
 
 namespace fw::win {
 
-// Applies the shortcut of every parameter whose key is `key` (an ASCII
-// letter or digit; GLFW's key codes for A-Z and 0-9 are their ASCII codes).
-// `repeat`: the key is held down; only numbers step again then.
-// Returns true if a parameter changed.
-bool apply_param_key(ParamValues& params, int key, bool shift, bool repeat);
+// GLFW's key codes for A-Z and 0-9 are their ASCII codes, so the window
+// passes them to fw::apply_param_key as they come.
+using fw::apply_param_key;
+using fw::Shortcut;
 
-struct Shortcut {
-    std::string keys;    // "D", "F / Shift+F", "F12"
-    std::string action;  // "toggle depth_test", "fov +/- 5 deg"
-};
 // The parameters' shortcuts, then R, F12 and Esc.
 std::vector<Shortcut> shortcut_list(const LabInfo& info);
 

@@ -1,0 +1,287 @@
+#include "framework/serve/live.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <exception>
+#include <functional>
+
+#include "framework/checkpoints.hpp"
+#include "framework/error.hpp"
+#include "framework/render.hpp"
+#include "framework/shortcuts.hpp"
+
+namespace fw {
+
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+// How often a playing lab is drawn, at most: the page's refresh rate.
+constexpr std::chrono::milliseconds kPlayInterval{16};
+
+json describe_param(const Param& p) {
+    json d = {{"name", p.name},          {"type", param_type_name(p.type)},
+              {"help", p.help_text},     {"unit", p.unit_text},
+              {"range", p.range_text()}, {"default", p.default_text()}};
+    if (p.type == ParamType::Float || p.type == ParamType::Int)
+        d.update({{"min", p.min}, {"max", p.max}, {"step", p.key_step()}});
+    if (p.type == ParamType::Enum) d["choices"] = p.choices;
+    if (p.shortcut) d["key"] = std::string(1, static_cast<char>(std::toupper(p.shortcut)));
+    return d;
+}
+
+json describe_lab(const RegisteredLab& lab, const ContextInfo& context) {
+    json params = json::array(), shortcuts = json::array(), checkpoints = json::array();
+    for (const Param& p : lab.info.params) params.push_back(describe_param(p));
+    for (const Shortcut& s : param_shortcuts(lab.info))
+        shortcuts.push_back({{"keys", s.keys}, {"action", s.action}});
+    shortcuts.push_back({{"keys", "R"}, {"action", "reload shaders from disk"}});
+    for (const Checkpoint& cp : load_checkpoints(lab))
+        checkpoints.push_back({{"name", cp.name},
+                               {"description", cp.description},
+                               {"visibility", cp.visibility},
+                               {"params", checkpoint_params(lab, cp).to_json()}});
+    return {{"lab", lab.info.id},
+            {"number", lab.info.number},
+            {"title", lab.info.title},
+            {"params", params},
+            {"controls", lab.info.controls},
+            {"shortcuts", shortcuts},
+            {"checkpoints", checkpoints},
+            {"backend", context.backend},
+            {"gl_version", context.gl_version},
+            {"gl_renderer", context.gl_renderer},
+            {"max_side", kMaxServeSide}};
+}
+
+bool animates(const ParamValues& params) {
+    for (const Param& p : params.params())
+        if (p.name == "animate" && p.type == ParamType::Bool && params.flag(p.name)) return true;
+    return false;
+}
+
+}  // namespace
+
+LiveLab::LiveLab(const RegisteredLab& lab, Backend backend, int width, int height)
+    : params_(default_params(lab)), width_(width), height_(height), lab_(lab) {
+    if (width < 1 || height < 1 || width > kMaxServeSide || height > kMaxServeSide)
+        throw UsageError("--size " + std::to_string(width) + "x" + std::to_string(height) +
+                         ": each side must be 1 to " + std::to_string(kMaxServeSide));
+    std::exception_ptr failure;
+    thread_ = std::thread([this, backend, &failure] {
+        try {
+            run(lab_, backend);
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (!started_) failure = std::current_exception();
+            started_ = true;
+            stopping_ = true;
+            start_cv_.notify_all();
+            framed_.notify_all();
+        }
+    });
+    std::unique_lock<std::mutex> lock(mutex_);
+    start_cv_.wait(lock, [this] { return started_; });
+    if (failure) {
+        lock.unlock();
+        thread_.join();
+        std::rethrow_exception(failure);
+    }
+}
+
+LiveLab::~LiveLab() {
+    stop();
+    if (thread_.joinable()) thread_.join();
+}
+
+void LiveLab::stop() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+    wake_.notify_all();
+    framed_.notify_all();
+}
+
+void LiveLab::run(const RegisteredLab& lab, Backend backend) {
+    std::unique_ptr<OffscreenContext> context = create_offscreen_context(backend);
+    LabRenderer renderer(lab, context->info());
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        renderer_ = &renderer;
+        description_ = describe_lab(lab, context->info());
+        for (const ShaderError* e : renderer.programs().build_errors())
+            shader_errors_.push_back(e->what());
+        started_ = true;
+        ++version_;  // the first frame
+    }
+    start_cv_.notify_all();
+    render_loop();
+    std::lock_guard<std::mutex> lock(mutex_);
+    renderer_ = nullptr;
+}
+
+void LiveLab::render_loop() {
+    std::uint64_t seq = 0;
+    for (;;) {
+        ParamValues params;
+        int width = 0, height = 0;
+        std::uint64_t version = 0;
+        double time = 0.0;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            auto due = [this] { return stopping_ || version_ != drawn_version_; };
+            if (players_ > 0 || animates(params_))
+                wake_.wait_for(lock, kPlayInterval, due);
+            else
+                wake_.wait(lock, due);
+            if (stopping_) return;
+            if (players_ > 0 || animates(params_))
+                time = std::chrono::duration<double>(Clock::now() - epoch_).count();
+        }
+        std::lock_guard<std::mutex> lab_lock(lab_mutex_);
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            const Frame frame{width_, height_, time};
+            for (const auto& [dx, dy] : drags_) renderer_->lab().on_drag(params_, frame, dx, dy);
+            for (double steps : scrolls_) renderer_->lab().on_scroll(params_, frame, steps);
+            drags_.clear();
+            scrolls_.clear();
+            if (reload_) {
+                reload_ = false;
+                shader_errors_ = renderer_->programs().reload_all();
+            }
+            params = params_;
+            width = width_;
+            height = height_;
+            version = version_;
+        }
+        auto frame = std::make_shared<LiveFrame>();
+        std::string error;
+        try {
+            RenderOutput out = renderer_->render(params, width, height, time, false);
+            frame->render_ms = out.stats.value("render_ms", 0.0);
+            frame->stats = std::move(out.stats);
+            frame->jpeg = encode_jpeg(out.color, 85);
+            frame->color = std::move(out.color);
+        } catch (const std::exception& e) {
+            // The last good frame stays on the page, with the reason beside it.
+            error = e.what();
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (frame_) *frame = *frame_;
+        }
+        frame->params = params.to_json();
+        std::lock_guard<std::mutex> lock(mutex_);
+        frame->seq = ++seq;
+        frame->version = version;
+        render_error_ = error;
+        drawn_version_ = version;
+        frame_ = std::move(frame);
+        framed_.notify_all();
+    }
+}
+
+std::uint64_t LiveLab::change(const std::function<void(ParamValues&)>& edit) {
+    std::lock_guard<std::mutex> lab_lock(lab_mutex_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!renderer_) throw Error("the lab is not running");
+    ParamValues next = params_;
+    edit(next);
+    const std::string problem = renderer_->lab().validate(next);
+    if (!problem.empty()) throw UsageError("lab '" + lab_.info.id + "': " + problem);
+    params_ = std::move(next);
+    ++version_;
+    wake_.notify_all();
+    return version_;
+}
+
+std::uint64_t LiveLab::set(const std::string& name, const std::string& value) {
+    return change([&](ParamValues& p) { p.set(name, value); });
+}
+
+std::uint64_t LiveLab::load_checkpoint(const std::string& name) {
+    const std::vector<Checkpoint> all = load_checkpoints(lab_);
+    const ParamValues values = checkpoint_params(lab_, find_checkpoint(all, name, lab_.info.id));
+    return change([&](ParamValues& p) { p = values; });
+}
+
+std::uint64_t LiveLab::key(const std::string& key, bool shift) {
+    if (key.size() != 1 || !std::isalnum(static_cast<unsigned char>(key[0])))
+        throw UsageError("key '" + key + "': keys are one letter or digit");
+    const int code = std::toupper(static_cast<unsigned char>(key[0]));
+    if (code == 'R') return reload_shaders();
+    bool known = false;
+    for (const Param& p : lab_.info.params)
+        known = known || (p.shortcut && std::toupper(p.shortcut) == code);
+    if (!known) {
+        std::string keys;
+        for (const Shortcut& s : param_shortcuts(lab_.info)) keys += ", " + s.keys;
+        throw UsageError("key '" + key + "' does nothing in lab '" + lab_.info.id +
+                         "'; its keys: R" + keys);
+    }
+    return change([&](ParamValues& p) { apply_param_key(p, code, shift, false); });
+}
+
+std::uint64_t LiveLab::drag(double dx, double dy) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    drags_.emplace_back(dx, dy);
+    wake_.notify_all();
+    return ++version_;
+}
+
+std::uint64_t LiveLab::scroll(double steps) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    scrolls_.push_back(steps);
+    wake_.notify_all();
+    return ++version_;
+}
+
+std::uint64_t LiveLab::redraw() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    wake_.notify_all();
+    return ++version_;
+}
+
+std::uint64_t LiveLab::reload_shaders() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    reload_ = true;
+    wake_.notify_all();
+    return ++version_;
+}
+
+std::uint64_t LiveLab::resize(int width, int height) {
+    if (width < 16 || height < 16 || width > kMaxServeSide || height > kMaxServeSide)
+        throw UsageError("size " + std::to_string(width) + "x" + std::to_string(height) +
+                         ": each side must be 16 to " + std::to_string(kMaxServeSide));
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (width == width_ && height == height_) return version_;
+    width_ = width;
+    height_ = height;
+    wake_.notify_all();
+    return ++version_;
+}
+
+std::uint64_t LiveLab::play(bool on) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    players_ = std::max(0, players_ + (on ? 1 : -1));
+    wake_.notify_all();
+    return ++version_;
+}
+
+std::shared_ptr<const LiveFrame> LiveLab::wait_frame(std::uint64_t after,
+                                                     std::chrono::milliseconds timeout) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    framed_.wait_for(lock, timeout, [&] { return stopping_ || (frame_ && frame_->seq > after); });
+    return frame_ && frame_->seq > after ? frame_ : nullptr;
+}
+
+std::shared_ptr<const LiveFrame> LiveLab::latest() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return frame_;
+}
+
+json LiveLab::problems() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return {{"shader_errors", shader_errors_}, {"render_error", render_error_}};
+}
+
+}  // namespace fw

@@ -1,0 +1,378 @@
+// The HTTP and WebSocket side of `lab serve`, on CivetWeb. Every connection
+// has a CivetWeb worker thread of its own; each WebSocket client also has a
+// sender thread that sends it the newest frame whenever there is one it has
+// not had, so a slow client only ever skips frames, and never holds up the
+// renderer or another client.
+#include "framework/serve/server.hpp"
+
+#include <civetweb.h>
+#include <pthread.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <thread>
+
+#include "framework/context.hpp"
+#include "framework/error.hpp"
+#include "framework/image.hpp"
+#include "framework/serve/live.hpp"
+
+namespace fw {
+
+namespace {
+
+using nlohmann::json;
+
+// A WebSocket client: its connection and the thread that sends it frames.
+struct Client {
+    mg_connection* conn = nullptr;
+    std::thread sender;
+    std::atomic<bool> closing{false};
+    std::atomic<bool> png{false};      // frames as PNG (exact pixels) instead of JPEG
+    std::atomic<bool> playing{false};  // it asked the lab to play
+};
+
+class Server {
+public:
+    Server(LiveLab& live, std::string lab_id) : live_(live), lab_id_(std::move(lab_id)) {}
+
+    LiveLab& live() { return live_; }
+    const std::string& lab_id() const { return lab_id_; }
+
+    // Sends one WebSocket message; false once the client is gone.
+    static bool send(mg_connection* conn, int opcode, const std::string& bytes) {
+        mg_lock_connection(conn);
+        const int sent = mg_websocket_write(conn, opcode, bytes.data(), bytes.size());
+        mg_unlock_connection(conn);
+        return sent > 0;
+    }
+    static bool send_json(mg_connection* conn, const json& message) {
+        return send(conn, MG_WEBSOCKET_OPCODE_TEXT, message.dump());
+    }
+
+    void frames_to(Client& client) {
+        std::uint64_t sent = 0;
+        while (!client.closing) {
+            auto frame = live_.wait_frame(sent, std::chrono::milliseconds(100));
+            if (!frame) continue;
+            const bool png = client.png;
+            json meta = {{"type", "frame"},
+                         {"seq", frame->seq},
+                         {"version", frame->version},
+                         {"render_ms", frame->render_ms},
+                         {"width", frame->color.width},
+                         {"height", frame->color.height},
+                         {"format", png ? "png" : "jpeg"},
+                         {"params", frame->params},
+                         {"stats", frame->stats},
+                         {"problems", live_.problems()}};
+            if (frame->color.pixels.empty()) meta["format"] = "none";
+            if (!send_json(client.conn, meta)) break;
+            if (!frame->color.pixels.empty() && !send(client.conn, MG_WEBSOCKET_OPCODE_BINARY,
+                                                      png ? encode_png(frame->color) : frame->jpeg))
+                break;
+            sent = frame->seq;
+        }
+    }
+
+    std::mutex clients_mutex;
+    std::set<Client*> clients;
+
+private:
+    LiveLab& live_;
+    std::string lab_id_;
+};
+
+std::string text_of(const json& value) {
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+    if (value.is_number()) return value.dump();
+    throw UsageError("a value must be a string, a number or true/false, not " + value.dump());
+}
+
+double number_field(const json& m, const char* name) {
+    if (!m.contains(name) || !m[name].is_number())
+        throw UsageError(std::string("\"") + name + "\" must be a number");
+    return m[name].get<double>();
+}
+
+std::string string_field(const json& m, const char* name) {
+    if (!m.contains(name) || !m[name].is_string())
+        throw UsageError(std::string("\"") + name + "\" must be a string");
+    return m[name].get<std::string>();
+}
+
+// One message from the page; returns the version its change will show in.
+std::uint64_t apply_message(Server& server, Client& client, const json& m) {
+    LiveLab& live = server.live();
+    const std::string type = string_field(m, "type");
+    if (type == "set") {
+        if (!m.contains("value")) throw UsageError("\"value\" is missing");
+        return live.set(string_field(m, "name"), text_of(m["value"]));
+    }
+    if (type == "checkpoint") return live.load_checkpoint(string_field(m, "name"));
+    if (type == "drag") return live.drag(number_field(m, "dx"), number_field(m, "dy"));
+    if (type == "scroll") return live.scroll(number_field(m, "steps"));
+    if (type == "key") return live.key(string_field(m, "key"), m.value("shift", false));
+    if (type == "reload") return live.reload_shaders();
+    if (type == "size") {
+        const double w = number_field(m, "width"), h = number_field(m, "height");
+        if (w != static_cast<int>(w) || h != static_cast<int>(h))
+            throw UsageError("\"width\" and \"height\" must be whole numbers");
+        return live.resize(static_cast<int>(w), static_cast<int>(h));
+    }
+    if (type == "play") {
+        if (!m.contains("on") || !m["on"].is_boolean())
+            throw UsageError("\"on\" must be true or false");
+        const bool on = m["on"].get<bool>();
+        if (client.playing.exchange(on) == on) return live.latest() ? live.latest()->version : 0;
+        return live.play(on);
+    }
+    if (type == "format") {
+        const std::string format = string_field(m, "format");
+        if (format != "jpeg" && format != "png")
+            throw UsageError("\"format\" must be \"jpeg\" or \"png\", not \"" + format + "\"");
+        client.png = format == "png";
+        return live.redraw();  // the frame now on screen, again, in that format
+    }
+    throw UsageError("unknown message type \"" + type +
+                     "\"; types: set, checkpoint, drag, scroll, key, reload, size, play, format");
+}
+
+int ws_connect(const mg_connection*, void*) { return 0; }
+
+void ws_ready(mg_connection* conn, void* data) {
+    auto& server = *static_cast<Server*>(data);
+    auto client = std::make_unique<Client>();
+    client->conn = conn;
+    Server::send_json(conn, {{"type", "hello"},
+                             {"lab", server.live().describe()},
+                             {"problems", server.live().problems()}});
+    Client* c = client.get();
+    c->sender = std::thread([&server, c] { server.frames_to(*c); });
+    mg_set_user_connection_data(conn, client.release());
+    std::lock_guard<std::mutex> lock(server.clients_mutex);
+    server.clients.insert(c);
+}
+
+int ws_data(mg_connection* conn, int bits, char* data, size_t size, void* cbdata) {
+    auto& server = *static_cast<Server*>(cbdata);
+    auto* client = static_cast<Client*>(mg_get_user_connection_data(conn));
+    const int opcode = bits & 0x0f;
+    if (opcode == MG_WEBSOCKET_OPCODE_CONNECTION_CLOSE) return 0;
+    if (opcode == MG_WEBSOCKET_OPCODE_PING || opcode == MG_WEBSOCKET_OPCODE_PONG) return 1;
+    if (!client) return 0;
+    json id;
+    try {
+        if (opcode != MG_WEBSOCKET_OPCODE_TEXT)
+            throw UsageError("messages must be JSON text, not binary");
+        const json m = json::parse(data, data + size, nullptr, false);
+        if (!m.is_object()) throw UsageError("a message must be a JSON object");
+        if (m.contains("id")) id = m["id"];
+        const std::uint64_t version = apply_message(server, *client, m);
+        Server::send_json(conn, {{"type", "ack"}, {"id", id}, {"version", version}});
+    } catch (const Error& e) {
+        Server::send_json(conn, {{"type", "error"}, {"id", id}, {"message", e.what()}});
+    }
+    return 1;
+}
+
+void ws_close(const mg_connection* conn, void* cbdata) {
+    auto& server = *static_cast<Server*>(cbdata);
+    std::unique_ptr<Client> client(
+        static_cast<Client*>(mg_get_user_connection_data(const_cast<mg_connection*>(conn))));
+    if (!client) return;
+    {
+        std::lock_guard<std::mutex> lock(server.clients_mutex);
+        server.clients.erase(client.get());
+    }
+    client->closing = true;
+    if (client->sender.joinable()) client->sender.join();
+    if (client->playing) server.live().play(false);
+}
+
+// HTTP responses: text, JSON and errors that say what is wrong.
+void reply(mg_connection* conn, int status, const std::string& mime, const std::string& body,
+           const std::string& extra_headers = "") {
+    const char* reason = status == 200   ? "OK"
+                         : status == 400 ? "Bad Request"
+                         : status == 404 ? "Not Found"
+                         : status == 405 ? "Method Not Allowed"
+                                         : "Service Unavailable";
+    mg_printf(conn,
+              "HTTP/1.1 %d %s\r\nContent-Type: %s\r\nContent-Length: %zu\r\n"
+              "Cache-Control: no-store\r\nX-Content-Type-Options: nosniff\r\n%sConnection: "
+              "close\r\n\r\n",
+              status, reason, mime.c_str(), body.size(), extra_headers.c_str());
+    mg_write(conn, body.data(), body.size());
+}
+
+void reply_error(mg_connection* conn, int status, const std::string& message) {
+    reply(conn, status, "application/json", json{{"error", message}}.dump() + "\n");
+}
+
+// "a=1&b=two" -> {a: "1", b: "two"}, URL-decoded.
+std::vector<std::pair<std::string, std::string>> query_pairs(const char* query) {
+    std::vector<std::pair<std::string, std::string>> pairs;
+    if (!query) return pairs;
+    const std::string q = query;
+    size_t start = 0;
+    while (start <= q.size()) {
+        size_t end = q.find('&', start);
+        if (end == std::string::npos) end = q.size();
+        const std::string item = q.substr(start, end - start);
+        if (!item.empty()) {
+            const size_t eq = item.find('=');
+            auto decode = [](const std::string& s) {
+                std::string out(s.size() + 1, '\0');
+                const int n = mg_url_decode(s.c_str(), static_cast<int>(s.size()), out.data(),
+                                            static_cast<int>(out.size()), 1);
+                if (n < 0) throw UsageError("the query is not URL-encoded text: '" + s + "'");
+                out.resize(static_cast<size_t>(n));
+                return out;
+            };
+            pairs.emplace_back(decode(item.substr(0, eq)),
+                               eq == std::string::npos ? "" : decode(item.substr(eq + 1)));
+        }
+        start = end + 1;
+    }
+    return pairs;
+}
+
+int http(mg_connection* conn, void* cbdata) {
+    auto& server = *static_cast<Server*>(cbdata);
+    const mg_request_info* info = mg_get_request_info(conn);
+    const std::string method = info->request_method ? info->request_method : "";
+    const std::string path = info->local_uri_raw ? info->local_uri_raw : "";
+    try {
+        if (path == "/api/set") {
+            if (method != "POST") {
+                reply_error(conn, 405, "/api/set takes POST, e.g. POST /api/set?name=value");
+                return 405;
+            }
+            const auto pairs = query_pairs(info->query_string);
+            if (pairs.empty()) throw UsageError("/api/set needs name=value in its query");
+            std::uint64_t version = 0;
+            for (const auto& [name, value] : pairs) version = server.live().set(name, value);
+            reply(conn, 200, "application/json", json{{"version", version}}.dump() + "\n");
+            return 200;
+        }
+        if (method != "GET" && method != "HEAD") {
+            reply_error(conn, 405, method + " " + path + ": only GET is served here");
+            return 405;
+        }
+        if (path == "/api/lab") {
+            json body = server.live().describe();
+            body["problems"] = server.live().problems();
+            if (auto frame = server.live().latest()) body["params_now"] = frame->params;
+            reply(conn, 200, "application/json", body.dump() + "\n");
+            return 200;
+        }
+        if (path == "/frame.jpg" || path == "/frame.png") {
+            auto frame = server.live().wait_frame(0, std::chrono::seconds(10));
+            if (!frame || frame->color.pixels.empty()) {
+                reply_error(conn, 503, "no frame has been rendered yet");
+                return 503;
+            }
+            const bool png = path == "/frame.png";
+            std::string headers;
+            for (const auto& [name, value] : query_pairs(info->query_string))
+                if (name == "download")
+                    headers = "Content-Disposition: attachment; filename=\"" + server.lab_id() +
+                              "-" + std::to_string(frame->seq) + ".png\"\r\n";
+            reply(conn, 200, png ? "image/png" : "image/jpeg",
+                  png ? encode_png(frame->color) : frame->jpeg, headers);
+            return 200;
+        }
+        if (const PageAsset* asset = find_page_asset(path)) {
+            reply(conn, 200, asset->mime,
+                  std::string(reinterpret_cast<const char*>(asset->data), asset->size));
+            return 200;
+        }
+        reply_error(conn, 404, "no such page: " + path + " (lab serve serves only its own page)");
+        return 404;
+    } catch (const Error& e) {
+        reply_error(conn, 400, e.what());
+        return 400;
+    }
+}
+
+void check_host(const std::string& host) {
+    const bool ok =
+        !host.empty() && host.find_first_not_of("0123456789abcdefABCDEF.:[]") == std::string::npos;
+    if (!ok)
+        throw UsageError("--host " + host +
+                         ": give an IP address, e.g. 127.0.0.1 (this machine only, the default) "
+                         "or 0.0.0.0 (every network interface, as in a container)");
+}
+
+}  // namespace
+
+void serve(const ServeOptions& options) {
+    const RegisteredLab& lab = find_lab(options.lab);
+    check_host(options.host);
+    if (options.port < 0 || options.port > 65535)
+        throw UsageError("--port " + std::to_string(options.port) + ": a port is 0 to 65535");
+    const Backend backend =
+        options.backend.empty() ? backend_from_env() : parse_backend(options.backend);
+
+    // SIGINT and SIGTERM wait for sigwait below: every thread started from
+    // here on inherits the blocked mask, so none of them is interrupted.
+    sigset_t stop_signals;
+    sigemptyset(&stop_signals);
+    sigaddset(&stop_signals, SIGINT);
+    sigaddset(&stop_signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+    LiveLab live(lab, backend, options.width, options.height);
+    Server server(live, lab.info.id);
+
+    mg_init_library(0);
+    if (!mg_check_feature(16)) {
+        mg_exit_library();
+        throw EnvironmentError("this CivetWeb library was built without WebSocket support");
+    }
+    const bool v6 = options.host.find(':') != std::string::npos;
+    const std::string ports =
+        (v6 ? "[" + options.host + "]" : options.host) + ":" + std::to_string(options.port);
+    const char* mg_options[] = {"listening_ports",    ports.c_str(), "num_threads", "32",
+                                "request_timeout_ms", "10000",       nullptr};
+    mg_callbacks callbacks{};
+    mg_context* ctx = mg_start(&callbacks, &server, mg_options);
+    if (!ctx) {
+        mg_exit_library();
+        throw EnvironmentError("cannot listen on " + ports +
+                               ": the port is in use or the address is not this machine's; "
+                               "choose another with --port N");
+    }
+    mg_set_websocket_handler(ctx, "/ws", ws_connect, ws_ready, ws_data, ws_close, &server);
+    mg_set_request_handler(ctx, "/", http, &server);
+
+    mg_server_port port{};
+    const int port_count = mg_get_server_ports(ctx, 1, &port);
+    const int bound = port_count > 0 ? port.port : options.port;
+    const std::string shown = options.host == "0.0.0.0" ? "127.0.0.1" : options.host;
+    std::printf("lab serve: %s on %s (%s)\n", lab.info.id.c_str(),
+                live.describe().value("gl_renderer", "?").c_str(),
+                live.describe().value("backend", "?").c_str());
+    std::printf("open http://%s:%d/ in a browser; Ctrl-C stops\n",
+                v6 ? ("[" + shown + "]").c_str() : shown.c_str(), bound);
+    std::fflush(stdout);
+
+    int signal = 0;
+    sigwait(&stop_signals, &signal);
+    std::printf("lab serve: %s, stopping\n", signal == SIGINT ? "interrupted" : "terminated");
+    std::fflush(stdout);
+    live.stop();
+    mg_stop(ctx);
+    mg_exit_library();
+}
+
+}  // namespace fw
