@@ -118,7 +118,10 @@ std::uint64_t apply_message(Server& server, Client& client, const json& m) {
         return live.set(string_field(m, "name"), text_of(m["value"]));
     }
     if (type == "checkpoint") return live.load_checkpoint(string_field(m, "name"));
-    if (type == "drag") return live.drag(number_field(m, "dx"), number_field(m, "dy"));
+    if (type == "drag") {
+        const double dx = number_field(m, "dx");
+        return live.drag(dx, number_field(m, "dy"));
+    }
     if (type == "scroll") return live.scroll(number_field(m, "steps"));
     if (type == "key") return live.key(string_field(m, "key"), m.value("shift", false));
     if (type == "reload") return live.reload_shaders();

@@ -10,15 +10,18 @@ const canvas = $("frame");
 const context2d = canvas.getContext("2d");
 const state = window.labServe = {
   lab: null, socket: null, frames: 0, meta: null, pendingMeta: null, lastError: "",
-  acked: 0, problems: null, nextId: 1, playing: false, editing: null,
+  acked: 0, unanswered: 0, problems: null, nextId: 1, playing: false, editing: null, send: null,
 };
 
 function send(message) {
   if (!state.socket || state.socket.readyState !== WebSocket.OPEN) return 0;
   message.id = state.nextId++;
+  state.unanswered += 1;
   state.socket.send(JSON.stringify(message));
   return message.id;
 }
+
+state.send = send;
 
 function setStatus(text, isError) {
   $("status").textContent = text;
@@ -175,9 +178,11 @@ function onMessage(event) {
     if (message.format === "none") state.meta = message;
     else state.pendingMeta = message;
   } else if (message.type === "ack") {
+    state.unanswered -= 1;
     state.acked = Math.max(state.acked, message.version);
     if (!state.lastError) setStatus("connected");
   } else if (message.type === "error") {
+    state.unanswered -= 1;
     state.lastError = message.message;
     setStatus(message.message, true);
     setTimeout(() => { if (state.lastError === message.message) state.lastError = ""; }, 4000);
