@@ -122,6 +122,7 @@ void LiveLab::run(const RegisteredLab& lab, Backend backend) {
 
 void LiveLab::render_loop() {
     std::uint64_t seq = 0;
+    Clock::time_point next_due = Clock::now();  // while playing: the next frame's start
     for (;;) {
         ParamValues params;
         int width = 0, height = 0;
@@ -131,9 +132,10 @@ void LiveLab::render_loop() {
             std::unique_lock<std::mutex> lock(mutex_);
             auto due = [this] { return stopping_ || version_ != drawn_version_; };
             if (players_ > 0 || animates(params_))
-                wake_.wait_for(lock, kPlayInterval, due);
+                wake_.wait_until(lock, next_due, due);
             else
                 wake_.wait(lock, due);
+            next_due = std::max(next_due + kPlayInterval, Clock::now());
             if (stopping_) return;
             if (players_ > 0 || animates(params_))
                 time = std::chrono::duration<double>(Clock::now() - epoch_).count();

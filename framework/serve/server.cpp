@@ -345,8 +345,11 @@ void serve(const ServeOptions& options) {
     const bool v6 = options.host.find(':') != std::string::npos;
     const std::string ports =
         (v6 ? "[" + options.host + "]" : options.host) + ":" + std::to_string(options.port);
-    const char* mg_options[] = {"listening_ports",    ports.c_str(), "num_threads", "32",
-                                "request_timeout_ms", "10000",       nullptr};
+    // tcp_nodelay: a frame's last bytes and an ack go out at once, not after
+    // the peer's delayed acknowledgement (40 ms and more per change).
+    const char* mg_options[] = {
+        "listening_ports", ports.c_str(), "num_threads", "32",   "request_timeout_ms",
+        "10000",           "tcp_nodelay", "1",           nullptr};
     mg_callbacks callbacks{};
     mg_context* ctx = mg_start(&callbacks, &server, mg_options);
     if (!ctx) {
