@@ -189,13 +189,15 @@ int ws_data(mg_connection* conn, int bits, char* data, size_t size, void* cbdata
 
 void ws_close(const mg_connection* conn, void* cbdata) {
     auto& server = *static_cast<Server*>(cbdata);
-    std::unique_ptr<Client> client(
-        static_cast<Client*>(mg_get_user_connection_data(const_cast<mg_connection*>(conn))));
-    if (!client) return;
+    auto* known =
+        static_cast<Client*>(mg_get_user_connection_data(const_cast<mg_connection*>(conn)));
     {
+        // Only a client still in the set is this handler's: serve() ends the
+        // others itself when it stops.
         std::lock_guard<std::mutex> lock(server.clients_mutex);
-        server.clients.erase(client.get());
+        if (!known || server.clients.erase(known) == 0) return;
     }
+    std::unique_ptr<Client> client(known);
     client->closing = true;
     if (client->sender.joinable()) client->sender.join();
     if (client->playing) server.live().play(false);
@@ -376,8 +378,22 @@ void serve(const ServeOptions& options) {
     sigwait(&stop_signals, &signal);
     std::printf("lab serve: %s, stopping\n", signal == SIGINT ? "interrupted" : "terminated");
     std::fflush(stdout);
+    // The clients' senders end first (they use the connections and the
+    // lab); then CivetWeb closes the connections; what its close handlers
+    // did not take is freed here.
     live.stop();
+    {
+        std::lock_guard<std::mutex> lock(server.clients_mutex);
+        for (Client* c : server.clients) c->closing = true;
+        for (Client* c : server.clients)
+            if (c->sender.joinable()) c->sender.join();
+    }
     mg_stop(ctx);
+    {
+        std::lock_guard<std::mutex> lock(server.clients_mutex);
+        for (Client* c : server.clients) delete c;
+        server.clients.clear();
+    }
     mg_exit_library();
 }
 
