@@ -102,7 +102,8 @@ void shortcut_table(const LabInfo& info) {
 
 }  // namespace
 
-void draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string& gl_renderer) {
+void draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string& gl_renderer,
+                const std::string& notice) {
     const LabInfo& info = lab.info;
     char name[128];
     std::snprintf(name, sizeof name, "lab %02d %s", info.number, info.id.c_str());
@@ -118,6 +119,13 @@ void draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string
     ImGui::TextDisabled("%.0f fps (%.1f ms), %s", static_cast<double>(io.Framerate),
                         io.Framerate > 0.0f ? 1000.0 / static_cast<double>(io.Framerate) : 0.0,
                         gl_renderer.c_str());
+    if (!notice.empty()) {
+        // The panel sizes itself to what it holds: unwrapped, this line would
+        // make it as wide as the whole text.
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 330.0f);
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", notice.c_str());
+        ImGui::PopTextWrapPos();
+    }
     ImGui::Separator();
 
     ImGui::PushItemWidth(150);

@@ -17,20 +17,39 @@ public:
     ~GlfwLibrary();
     GlfwLibrary(const GlfwLibrary&) = delete;
     GlfwLibrary& operator=(const GlfwLibrary&) = delete;
+
+    // glfwTerminate, then glfwInit again, so that the GL driver is loaded
+    // afresh and reads the environment again. No window may be open.
+    void restart();
+
+private:
+    std::string lab_id_;
 };
 
 // A resizable window whose GL 4.3 core context (not forward-compatible,
-// single-sampled, no sRGB) is made current.
+// single-sampled, no sRGB) is made current. When the driver cannot give that
+// context (it fails, or hands back an older version or another profile), the
+// window is made again on Mesa's software renderer, llvmpipe: `glfw` is
+// restarted with LIBGL_ALWAYS_SOFTWARE=1 and GALLIUM_DRIVER=llvmpipe set.
+// Throws EnvironmentError, naming the version the driver offers and the
+// offscreen alternatives (`lab serve`, `lab render`), when that fails too or
+// when software rendering was already forced.
 class GlfwWindow {
 public:
-    GlfwWindow(const std::string& lab_id, const std::string& title, int width, int height);
+    GlfwWindow(GlfwLibrary& glfw, const std::string& lab_id, const std::string& title, int width,
+               int height);
     ~GlfwWindow();
     GlfwWindow(const GlfwWindow&) = delete;
     GlfwWindow& operator=(const GlfwWindow&) = delete;
     GLFWwindow* get() const { return window_; }
 
+    // Empty when the driver's own context is in use; otherwise one line that
+    // says the window renders in software, and why.
+    const std::string& software_notice() const { return software_notice_; }
+
 private:
     GLFWwindow* window_ = nullptr;
+    std::string software_notice_;
 };
 
 // Dear ImGui with its GLFW and OpenGL 3 backends. Create it after the

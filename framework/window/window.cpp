@@ -198,13 +198,15 @@ void install_callbacks(GLFWwindow* window, InputState& input) {
 class WindowLoop {
 public:
     WindowLoop(const RegisteredLab& lab, Lab& instance, ParamValues& params,
-               const WindowOptions& options, GLFWwindow* window, InputState& input)
+               const WindowOptions& options, GLFWwindow* window, InputState& input,
+               const std::string& software_notice)
         : lab_(lab),
           instance_(instance),
           params_(params),
           options_(options),
           window_(window),
-          input_(input) {}
+          input_(input),
+          software_notice_(software_notice) {}
 
     // Frame `n` (from 1); false once it was the last.
     bool frame(int n, const std::vector<win::ScriptedKey>& scripted, ProgramLibrary& programs,
@@ -228,7 +230,7 @@ public:
         resize(width, height);
         const std::vector<std::string> problems = draw();
         imgui.begin_frame();
-        if (options_.show_ui) win::draw_panel(lab_, params_, context.gl_renderer);
+        if (options_.show_ui) win::draw_panel(lab_, params_, context.gl_renderer, software_notice_);
         win::draw_errors(problems);
         imgui.end_frame();
         if (input_.screenshot) save_screenshot(width, height);
@@ -280,6 +282,7 @@ private:
     const WindowOptions& options_;
     GLFWwindow* window_;
     InputState& input_;
+    const std::string& software_notice_;  // shown in the panel when not empty
     const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
     std::unique_ptr<Framebuffer> framebuffer_;
     std::vector<std::string> reload_errors_;  // stay until a reload succeeds
@@ -293,7 +296,12 @@ void run_window(const RegisteredLab& lab, ParamValues params, const WindowOption
     const char* script = std::getenv("LAB_RUN_SCRIPT");
     const std::vector<win::ScriptedKey> scripted = win::parse_key_script(script ? script : "");
     win::GlfwLibrary glfw(id);
-    win::GlfwWindow window(id, window_title(lab.info), options.width, options.height);
+    win::GlfwWindow window(glfw, id, window_title(lab.info), options.width, options.height);
+    const std::string& notice = window.software_notice();
+    if (!notice.empty()) {
+        std::fprintf(stderr, "lab: %s\n", notice.c_str());
+        std::fflush(stderr);
+    }
     ContextInfo context{"glfw", "glx", "", "", ""};
     load_gl_and_check(glfwGetProcAddress, context);
     keep_gl_drivers_loaded();
@@ -311,7 +319,7 @@ void run_window(const RegisteredLab& lab, ParamValues params, const WindowOption
     input.lab = instance.get();
     input.params = &params;
 
-    WindowLoop loop(lab, *instance, params, options, window.get(), input);
+    WindowLoop loop(lab, *instance, params, options, window.get(), input, notice);
     for (int frame = 1; loop.frame(frame, scripted, programs, imgui, context);) ++frame;
 }
 

@@ -1,7 +1,9 @@
 // `lab run` (docs/contract.md, `lab`): under Xvfb the window shows exactly what
 // `lab render` draws offscreen, the panel draws on top of it, and without a
-// display the error says what is missing and what to run instead. Each case
-// runs the real `lab` executable as a child process.
+// display the error says what is missing and what to run instead. A driver
+// without GL 4.3 core (imitated with Mesa's override variables) makes the
+// window fall back to the software renderer, or fail naming `lab serve`.
+// Each case runs the real `lab` executable as a child process.
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +23,18 @@ std::string lab() { return fw::test::bin_dir() + "/lab"; }
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
+
+int occurrences(const std::string& text, const std::string& part) {
+    int n = 0;
+    for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+    return n;
+}
+
+// Mesa reports the version MESA_GL_VERSION_OVERRIDE names, so the window's 4.3
+// core request fails as it does on a driver that offers only GL 4.1.
+const std::string kOldDriver = "MESA_GL_VERSION_OVERRIDE=4.1";
+const std::string kSoftwareLine =
+    "Software rendering (llvmpipe): the GPU driver offers only OpenGL 4.1";
 
 fw::test::CommandResult run(const std::string& cmd) {
     fw::test::CommandResult r = fw::test::run_command(cmd);
@@ -68,14 +82,32 @@ fw::CompareResult compare_files(const std::string& actual, const std::string& ex
     return r;
 }
 
-// The window's last frame (--screenshot) and the offscreen render of `args`.
-fw::CompareResult window_vs_offscreen(const std::string& args, const std::string& window_flags) {
+// The window's last frame (--screenshot) and the offscreen render of `args`;
+// `env` is set for `lab run`, and `output` gets what it printed.
+fw::CompareResult window_vs_offscreen(const std::string& args, const std::string& window_flags,
+                                      const std::string& env = "", std::string* output = nullptr) {
     std::string dir = fw::test::out_dir();
-    fw::test::CommandResult win =
-        run_in_xvfb(args + " --frames 3 " + window_flags + " --screenshot " + dir + "/win.png");
+    fw::test::CommandResult win = run_in_xvfb(
+        args + " --frames 3 " + window_flags + " --screenshot " + dir + "/win.png", ".", env);
     REQUIRE(win.exit_code == 0);
+    if (output) *output = win.output;
     render_offscreen(args, dir + "/off.png");
     return compare_files(dir + "/win.png", dir + "/off.png");
+}
+
+// How many pixels of column x = 12, inside the panel's left edge, differ
+// between the window's frame and the offscreen one: the panel's height.
+int panel_height(const std::string& window_png, const std::string& offscreen_png) {
+    fw::Image win = fw::read_png(window_png), off = fw::read_png(offscreen_png);
+    REQUIRE(win.width == off.width);
+    REQUIRE(win.height == off.height);
+    int rows = 0;
+    for (int y = 0; y < win.height; ++y) {
+        const fw::Rgba8 a = win.at(12, y), b = off.at(12, y);
+        if (a.r != b.r || a.g != b.g || a.b != b.b) ++rows;
+    }
+    MESSAGE(window_png << ": the panel is " << rows << " pixels high");
+    return rows;
 }
 
 }  // namespace
@@ -88,12 +120,16 @@ TEST_CASE("lab run without a display names DISPLAY and suggests xvfb-run, exit 3
     CHECK(contains(r.output, "WAYLAND_DISPLAY"));
     CHECK(contains(r.output, "xvfb-run -a lab run pipeline"));
     CHECK(contains(r.output, "lab render pipeline"));
+    CHECK(contains(r.output, "lab serve pipeline"));
 }
 
 TEST_CASE("lab run --no-ui shows what lab render draws offscreen") {
     require_window_support();
-    fw::CompareResult r = window_vs_offscreen("pipeline", "--no-ui");
+    std::string output;
+    fw::CompareResult r = window_vs_offscreen("pipeline", "--no-ui", "", &output);
     CHECK(r.passed);
+    // A driver with GL 4.3 core is used as it is.
+    CHECK_FALSE(contains(output, "Software rendering"));
 }
 
 TEST_CASE("lab run --set and --size reach the window") {
@@ -137,4 +173,53 @@ TEST_CASE("a malformed LAB_RUN_SCRIPT is a usage error naming the variable") {
     auto r = run_in_xvfb("pipeline --frames 1", ".", "LAB_RUN_SCRIPT=x:D");
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output, "LAB_RUN_SCRIPT: 'x:D' is not FRAME:KEY"));
+}
+
+TEST_CASE("lab run on a driver without GL 4.3 renders in software, says so once, same frame") {
+    require_window_support();
+    std::string output;
+    fw::CompareResult r = window_vs_offscreen("pipeline", "--no-ui", kOldDriver, &output);
+    CHECK(r.passed);
+    CHECK(occurrences(output, kSoftwareLine) == 1);
+    CHECK(contains(output, "$MESA_GL_VERSION_OVERRIDE was '4.1'"));
+}
+
+TEST_CASE("the panel shows the software rendering line") {
+    require_window_support();
+    std::string dir = fw::test::out_dir();
+    render_offscreen("pipeline", dir + "/off.png");
+    REQUIRE(run_in_xvfb("pipeline --frames 3 --screenshot " + dir + "/gpu.png").exit_code == 0);
+    REQUIRE(
+        run_in_xvfb("pipeline --frames 3 --screenshot " + dir + "/software.png", ".", kOldDriver)
+            .exit_code == 0);
+    const int gpu = panel_height(dir + "/gpu.png", dir + "/off.png");
+    const int software = panel_height(dir + "/software.png", dir + "/off.png");
+    CHECK(gpu > 100);
+    // The line wraps into several lines of 13-pixel text above the widgets.
+    CHECK(software >= gpu + 3 * 13);
+}
+
+TEST_CASE("without GL 4.3 core in software either, lab run names the version and lab serve") {
+    require_window_support();
+    // Mesa derives its version from its extensions, for llvmpipe too: without
+    // compute shaders every attempt gets GL 4.2.
+    auto r =
+        run_in_xvfb("pipeline --frames 1", ".", "MESA_EXTENSION_OVERRIDE=-GL_ARB_compute_shader");
+    CHECK(r.exit_code == 3);
+    fw::test::check_mentions(
+        r.output,
+        {"needs OpenGL 4.3 core", "the GPU driver offers only OpenGL 4.2",
+         "software renderer (llvmpipe) offers only OpenGL 4.2",
+         "'lab serve pipeline', then open the URL it prints", "'lab render pipeline -o out.png'"});
+    CHECK_FALSE(contains(r.output, "Software rendering"));
+}
+
+TEST_CASE("when software rendering was already forced, lab run fails without trying it again") {
+    require_window_support();
+    auto r = run_in_xvfb("pipeline --frames 1", ".", "LIBGL_ALWAYS_SOFTWARE=1 " + kOldDriver);
+    CHECK(r.exit_code == 3);
+    fw::test::check_mentions(r.output, {"needs OpenGL 4.3 core", "offers only OpenGL 4.1",
+                                        "$LIBGL_ALWAYS_SOFTWARE is '1'", "'lab serve pipeline'",
+                                        "'lab render pipeline -o out.png'"});
+    CHECK_FALSE(contains(r.output, "Software rendering"));
 }
