@@ -6,9 +6,11 @@
 # the solution:
 #   one lab   the solution, with lab 0's C++ files changed (a comment added)
 #   all labs  the solution, with every lab's C++ files changed
-# each twice: on one core (taskset -c 0), and in a cgroup with a CPU quota of
-# half a core and a 768 MB memory limit, where root can make one (cgroup v1
-# cpu and memory controllers, or v2). Prints, per run, the seconds course
+# each three times: on one core (taskset -c 0); in a cgroup with a CPU quota
+# of half a core and a 768 MB memory limit, where root can make one (cgroup v1
+# cpu and memory controllers, or v2); and there again without the shader
+# cache setup.sh warmed (course-bin/shader-cache), as every submission was
+# graded before there was one. Prints, per run, the seconds course
 # autograde spent copying, building and grading and the total, and the peak
 # memory (the cgroup's peak, page cache included) and whether the limit
 # killed anything. Needs root. Prints figures; it is not a test.
@@ -109,19 +111,23 @@ printf '%-9s %-20s %6s %6s %6s %7s  %-22s %s\n' submission machine copy build gr
 for scenario in "one lab:labs/00_" "all labs:labs/"; do
   label=${scenario%%:*}
   pattern=${scenario#*:}
-  for machine in "1 core" "half a core, 768 MB"; do
+  for machine in "1 core" "half a core, 768 MB" "half, no warm cache"; do
     submission '^$'  # the solution: the tree holds it again (not measured)
     AUTOGRADER_ROOT="$ag" bash "$ag/run_autograder" >/dev/null 2>&1
     submission "^$pattern"
     if [ "$machine" = "1 core" ]; then
       run "$(make_cgroup "${label// /-}-core" max 100000 max)" pin "$label" "$machine"
     else
-      group=$(make_cgroup "${label// /-}-half" 50000 100000 $((768 << 20)))
+      group=$(make_cgroup "${label// /-}-${machine//[ ,]/-}" 50000 100000 $((768 << 20)))
       if [ -z "$group" ]; then
         printf '%-9s %-20s (root cannot make a cgroup here)\n' "$label" "$machine"
         continue
       fi
+      # Without the shader cache setup.sh warmed: every shader compiles.
+      cache="$ag/source/course-bin/shader-cache"
+      [ "$machine" = "half, no warm cache" ] && [ -d "$cache" ] && mv "$cache" "$cache.off"
       run "$group" no "$label" "$machine"
+      [ -d "$cache.off" ] && mv "$cache.off" "$cache"
     fi
   done
 done
