@@ -7,9 +7,11 @@
 #include <imgui.h>
 
 #include <cctype>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <thread>
 
 #include "framework/error.hpp"
 
@@ -186,7 +188,14 @@ GlfwLibrary::~GlfwLibrary() { glfwTerminate(); }
 
 void GlfwLibrary::restart() {
     glfwTerminate();
-    if (!glfwInit()) no_window("GLFW could not initialise again", lab_id_);
+    // An X server with no other client (Xvfb, as xvfb-run starts it) resets
+    // when GLFW's connection closes, and refuses connections until it has:
+    // try again for up to two seconds.
+    for (int attempt = 0; attempt < 40; ++attempt) {
+        if (glfwInit()) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    no_window("GLFW could not initialise again", lab_id_);
 }
 
 GlfwWindow::GlfwWindow(GlfwLibrary& glfw, const std::string& lab_id, const std::string& title,

@@ -126,7 +126,7 @@ TEST_CASE("course grade --run-as nobody --shader-cache: each lab gets its own wr
     const std::string said = st.dir + "/said/cache.txt";  // where the fake, as nobody, may write
     fs::create_directories(st.dir + "/said");
     chmod((st.dir + "/said").c_str(), 0777);
-    Graded g = grade(st.env + " LAB_ROOT=" + tree +
+    Graded g = grade(st.env + " LAB_ROOT=" + tree + " FAKE_LAB_REAL_COPY=" + st.lab +
                          " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=cache FAKE_LAB_REPORT=" + said,
                      "pipeline --run-as nobody --lab " + st.fake + " --shader-cache " + cache, out);
     CHECK(g.exit_code == 0);

@@ -65,10 +65,14 @@ void require_window_support() {
 // listens only on its socket file under /tmp (-nolisten local: no abstract
 // socket, which every chroot and container on the machine would share), so a
 // suite in a chroot (scripts/fresh-debian.sh) never meets the host's displays.
+// -noreset: lab run's software fallback closes its only connection and opens
+// another, and an X server that resets then (Xvfb's default) refuses it for
+// a moment (lab run also retries for two seconds).
 fw::test::CommandResult run_in_xvfb(const std::string& args, const std::string& dir = ".",
                                     const std::string& env = "") {
     return run("cd " + dir + " && " + env +
-               " xvfb-run -a -s '-screen 0 1024x768x24 -nolisten local' " + lab() + " run " + args);
+               " xvfb-run -a -s '-screen 0 1024x768x24 -nolisten local -noreset' " + lab() +
+               " run " + args);
 }
 
 // `lab render ARGS -o FILE` on the default backend, as the grader renders.
