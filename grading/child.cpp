@@ -22,6 +22,7 @@
 #include <thread>
 
 #include "framework/error.hpp"
+#include "grading/sandbox.hpp"
 
 extern char** environ;
 
@@ -226,6 +227,7 @@ struct ChildStart {
     ChildLimits limits;
     const RunAsUser* user;
     rlim_t cpu_seconds = cpu_seconds_for(limits);
+    const SeccompFilter* filter = nullptr;
     pid_t parent = getpid();
     int devnull = -1;  // its stdin
     int out = -1;      // its stdout and stderr
@@ -247,9 +249,15 @@ struct ChildStart {
     // child before main().
     set_limit(RLIMIT_AS, c.limits.memory_cap, "RLIMIT_AS");
 #endif
-    if (c.user) switch_user(*c.user);
+    if (c.user) {
+        // Counted per user at each fork: a fork bomb stops here.
+        set_limit(RLIMIT_NPROC, kRunAsProcesses, "RLIMIT_NPROC");
+        switch_user(*c.user);
+    }
     // Killed with course (set after setuid, which clears it).
     if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != c.parent) child_fail("prctl");
+    // Last: from here on no socket but AF_UNIX, no ptrace, ... (sandbox.hpp).
+    if (c.filter && !c.filter->install()) child_fail("installing the seccomp filter");
     execve(c.argv[0], c.argv.data(), c.envp.data());
     child_fail("exec of the lab executable");
 }
@@ -354,7 +362,9 @@ std::string exit_status(int wait_status, const ChildStart& c) {
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
                    const ChildLimits& limits, const RunAsUser* user,
                    const std::vector<std::string>& env) {
+    static const SeccompFilter filter;  // built once, before any fork
     ChildStart start(argv, dir, limits, user, env);
+    start.filter = &filter;
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) throw fw::Error(std::string("pipe: ") + std::strerror(errno));
     start.devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
@@ -363,6 +373,7 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     const pid_t pid = fork();
     if (pid < 0) throw fw::Error(std::string("cannot fork the lab child: ") + std::strerror(errno));
     if (pid == 0) exec_child(start);
+    lab_started(pid);
     setpgid(pid, pid);  // also here, so that killpg works before the child gets to it
     close(fds[1]);
     if (start.devnull >= 0) close(start.devnull);
@@ -373,6 +384,11 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     close(fds[0]);
     ChildRun run = std::move(watch.run());
     if (!watch.killed()) run.status = exit_status(watch.wait_status(), start);
+    lab_ended(pid);  // watch() has reaped it
+    // Whatever it left running, setsid() or not, dies with its lab.
+    if (const int strays = kill_strays(user))
+        run.log += "\ncourse: killed " + std::to_string(strays) +
+                   " process(es) the lab left running after it ended\n";
     return run;
 }
 

@@ -23,6 +23,7 @@
 #include "grading/checks.hpp"
 #include "grading/commands.hpp"
 #include "grading/reports.hpp"
+#include "grading/sandbox.hpp"
 
 namespace grading {
 
@@ -221,6 +222,8 @@ int grade_command(const GradeOptions& options) {
     const RunAsUser* as = user ? &*user : nullptr;
     prepare(options.out, all, labs, lab_binary, as);
 
+    // Orphans of a lab's child (a setsid() daemon) come back to course.
+    if (!become_subreaper()) throw fw::Error("cannot make course a child subreaper (prctl)");
     const unsigned seed = seed_from_env();
     std::vector<LabPlan> plans;
     for (const LabData& lab : labs) plans.push_back(plan_lab(lab, seed, PlanFor::Grading));
@@ -236,6 +239,15 @@ int grade_command(const GradeOptions& options) {
 
     GradeRun run;
     run.backend = backend_name(options);
+    run.sandbox = {
+        "seccomp filter in every child (EPERM: " + fw::join(SeccompFilter::denied(), ", ") + ")",
+        "course is a child subreaper: what a lab leaves running is killed when it ends"};
+    if (as)
+        run.sandbox.push_back("--run-as " + as->name + ": RLIMIT_NPROC " +
+                              std::to_string(kRunAsProcesses) + ", every process of " + as->name +
+                              " killed after each lab");
+    run.sandbox.push_back(
+        "not used: PID, network, mount and IPC namespaces and cgroups (not implemented yet)");
     run.labs.resize(labs.size());
     // --jobs workers take labs in order; each lab is one child.
     std::mutex print_mutex;

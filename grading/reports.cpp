@@ -409,6 +409,7 @@ std::string summary_table(const GradeRun& run) {
              " checks passed, " + std::to_string(labs) + (labs == 1 ? " lab, " : " labs, ") +
              report::fixed(run.seconds, 1) + " s" +
              (run.backend.empty() ? "" : ", backend " + ascii(run.backend)) + "\n";
+    if (!run.sandbox.empty()) table += "Sandbox: " + ascii(fw::join(run.sandbox, "; ")) + "\n";
     return table;
 }
 

@@ -43,6 +43,9 @@ struct GradeRun {
     std::vector<LabResult> labs;
     std::string backend;  // as asked: auto, osmesa, egl
     double seconds = 0.0;
+    // The sandbox's layers that were active, and those that were not, one
+    // line each (grading/sandbox.hpp), for summary.txt.
+    std::vector<std::string> sandbox;
 
     double score() const;
     double max_score() const;

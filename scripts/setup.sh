@@ -21,6 +21,8 @@ packages=(
   libspng-dev libpng-dev
   # `lab serve`: HTTP and WebSocket (CivetWeb) and JPEG frames (libjpeg-turbo).
   libcivetweb-dev libturbojpeg0-dev
+  # The grading child's seccomp filter.
+  libseccomp-dev
   # The format test (scripts/check-format.sh); any version from Debian 12's 14 on.
   clang-format
 )

@@ -18,11 +18,29 @@
 //   cache       writes into FAKE_LAB_REPORT where its Mesa shader cache is
 //               and whether it may write every file in it, plants a file
 //               there, then becomes the real lab
+//   network     tries a TCP connection to 127.0.0.1:FAKE_LAB_PORT, a UDP
+//               socket and a DNS lookup, prints what happened, exits 3
+//   ptrace      tries ptrace and process_vm_readv on course (its parent)
+//               and reading course's /proc environ, prints what happened,
+//               exits 3
+//   daemon      leaves a setsid() daemon (named lab-daemon) that waits 3 s
+//               and then writes into FAKE_LAB_SNOOP_WRITE, then becomes the
+//               real lab
+//   forkbomb    forks up to FAKE_LAB_FORKS children that wait, prints how
+//               many it made, exits 3
 // FAKE_LAB_MARK: a file the fake creates whenever it runs.
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <sys/prctl.h>
+#include <sys/ptrace.h>
+#include <sys/socket.h>
+#include <sys/uio.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -59,6 +77,65 @@ int run_real(char** argv) {
     int status = 0;
     waitpid(pid, &status, 0);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+int try_network(int port) {
+    const int tcp = socket(AF_INET, SOCK_STREAM, 0);
+    if (tcp < 0) {
+        std::printf("network: tcp socket: %s\n", std::strerror(errno));
+    } else {
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(static_cast<uint16_t>(port));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        const int rc = connect(tcp, reinterpret_cast<sockaddr*>(&addr), sizeof addr);
+        std::printf("network: connect 127.0.0.1:%d: %s\n", port,
+                    rc == 0 ? "CONNECTED" : std::strerror(errno));
+        close(tcp);
+    }
+    const int udp = socket(AF_INET6, SOCK_DGRAM, 0);
+    std::printf("network: udp6 socket: %s\n", udp < 0 ? std::strerror(errno) : "OPENED");
+    addrinfo* found = nullptr;
+    const int rc = getaddrinfo("deb.debian.org", "80", nullptr, &found);
+    std::printf("network: dns lookup: %s\n", rc == 0 ? "RESOLVED" : gai_strerror(rc));
+    if (found) freeaddrinfo(found);
+    const int local = socket(AF_UNIX, SOCK_STREAM, 0);
+    std::printf("network: unix socket: %s\n", local < 0 ? std::strerror(errno) : "opened");
+    return 3;
+}
+
+int try_ptrace(pid_t course) {
+    errno = 0;
+    const long rc = ptrace(PTRACE_ATTACH, course, nullptr, nullptr);
+    std::printf("ptrace: attach to course: %s\n", rc == 0 ? "ATTACHED" : std::strerror(errno));
+    if (rc == 0) ptrace(PTRACE_DETACH, course, nullptr, nullptr);
+    char buf[64];
+    iovec local{buf, sizeof buf};
+    iovec remote{reinterpret_cast<void*>(0x400000), sizeof buf};
+    const ssize_t n = process_vm_readv(course, &local, 1, &remote, 1, 0);
+    std::printf("ptrace: process_vm_readv of course: %s\n", n >= 0 ? "READ" : std::strerror(errno));
+    const std::string environ_path = "/proc/" + std::to_string(course) + "/environ";
+    std::ifstream in(environ_path);
+    std::string text;
+    std::getline(in, text, '\0');
+    std::printf("ptrace: read %s: %s\n", environ_path.c_str(), in ? "READ" : std::strerror(errno));
+    return 3;
+}
+
+// A daemon that outlives its lab unless course kills it: it leaves the
+// lab's process group and session, and its parent exits at once.
+void leave_daemon(const std::string& write_dir) {
+    const pid_t first = fork();
+    if (first != 0) {
+        waitpid(first, nullptr, 0);
+        return;
+    }
+    setsid();
+    if (fork() != 0) _exit(0);
+    prctl(PR_SET_NAME, "lab-daemon");
+    sleep(3);
+    write_text(write_dir + "/daemon-was-here.txt", "the lab's daemon outlived it\n");
+    _exit(0);
 }
 
 // Adds 1 to the first number found in `j`.
@@ -189,6 +266,28 @@ int main(int argc, char** argv) {
                        std::to_string(files) + " files writable\n");
         write_text(dir + "/planted.txt", "planted\n");
         return run_real(argv);
+    } else if (mode == "network") {
+        return try_network(std::atoi(env("FAKE_LAB_PORT").c_str()));
+    } else if (mode == "ptrace") {
+        return try_ptrace(getppid());
+    } else if (mode == "daemon") {
+        leave_daemon(env("FAKE_LAB_SNOOP_WRITE"));
+        return run_real(argv);
+    } else if (mode == "forkbomb") {
+        const int wanted = std::atoi(env("FAKE_LAB_FORKS").c_str());
+        int made = 0;
+        for (; made < wanted; ++made) {
+            const pid_t pid = fork();
+            if (pid < 0) {
+                std::printf("forkbomb: fork %d failed: %s\n", made + 1, std::strerror(errno));
+                break;
+            }
+            if (pid == 0) {
+                for (;;) pause();
+            }
+        }
+        std::printf("forkbomb: made %d of %d processes\n", made, wanted);
+        return 3;
     } else if (mode == "snoop") {
         snoop(env("FAKE_LAB_SNOOP_READ"), env("FAKE_LAB_SNOOP_WRITE"));
         return 3;

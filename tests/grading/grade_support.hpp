@@ -2,6 +2,9 @@
 // trees for LAB_ROOT, and reading the reports back.
 #pragma once
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -164,6 +167,29 @@ inline std::string make_tree(const std::string& dir, bool hostile) {
         dir + "/labs/01_hostile/checkpoints.json",
         "{\"lab\": \"hostile\", \"checkpoints\": [\n" + fw::join(checkpoints, ",\n") + "]}\n");
     return dir;
+}
+
+// Where the user can reach what it runs. The build may sit below a folder
+// only root can enter (a clone in a mktemp directory is 0700), so the test
+// stages `lab`, the fake and the shaders in a fresh world-searchable folder
+// and points LAB_SHADER_DIR there; LAB_ROOT trees are made inside it too.
+struct Staged {
+    std::string dir, lab, fake, env;
+};
+
+inline Staged stage_for_run_as() {
+    char name[] = "/tmp/course-run-as-XXXXXX";
+    REQUIRE(mkdtemp(name) != nullptr);
+    Staged s{name, std::string(name) + "/lab", std::string(name) + "/fake_lab", ""};
+    chmod(name, 0755);
+    fs::copy_file(fw::test::bin_dir() + "/lab", s.lab);
+    fs::copy_file(fake_lab(), s.fake);
+    fs::copy(fw::test::source_dir() + "/shaders", s.dir + "/shaders", fs::copy_options::recursive);
+    for (const auto& e : fs::recursive_directory_iterator(s.dir))
+        chmod(e.path().c_str(),
+              e.is_directory() ? 0755 : (e.path() == s.lab || e.path() == s.fake ? 0755 : 0644));
+    s.env = "LAB_SHADER_DIR=" + s.dir + "/shaders";
+    return s;
 }
 
 // Every report file is there and whole; results.json has `checks` checks.

@@ -25,29 +25,6 @@ void skip_unless_possible() {
     }
 }
 
-// Where the user can reach what it runs. The build may sit below a folder
-// only root can enter (a clone in a mktemp directory is 0700), so the test
-// stages `lab`, the fake and the shaders in a fresh world-searchable folder
-// and points LAB_SHADER_DIR there; LAB_ROOT trees are made inside it too.
-struct Staged {
-    std::string dir, lab, fake, env;
-};
-
-Staged stage() {
-    char name[] = "/tmp/course-run-as-XXXXXX";
-    REQUIRE(mkdtemp(name) != nullptr);
-    Staged s{name, std::string(name) + "/lab", std::string(name) + "/fake_lab", ""};
-    chmod(name, 0755);
-    fs::copy_file(fw::test::bin_dir() + "/lab", s.lab);
-    fs::copy_file(fake_lab(), s.fake);
-    fs::copy(fw::test::source_dir() + "/shaders", s.dir + "/shaders", fs::copy_options::recursive);
-    for (const auto& e : fs::recursive_directory_iterator(s.dir))
-        chmod(e.path().c_str(),
-              e.is_directory() ? 0755 : (e.path() == s.lab || e.path() == s.fake ? 0755 : 0644));
-    s.env = "LAB_SHADER_DIR=" + s.dir + "/shaders";
-    return s;
-}
-
 mode_t mode_of(const std::string& path) {
     struct stat st = {};
     stat(path.c_str(), &st);
@@ -58,7 +35,7 @@ mode_t mode_of(const std::string& path) {
 
 TEST_CASE("course grade --run-as nobody: full marks, references locked away") {
     skip_unless_possible();
-    const Staged st = stage();
+    const Staged st = stage_for_run_as();
     const std::string tree = make_tree(st.dir + "/tree", false);
     const std::string out = st.dir + "/report";
     Graded g = grade(st.env + " LAB_ROOT=" + tree, "pipeline --run-as nobody --lab " + st.lab, out);
@@ -72,7 +49,7 @@ TEST_CASE("course grade --run-as nobody: full marks, references locked away") {
 
 TEST_CASE("course grade --run-as nobody: the child cannot read a reference or write the report") {
     skip_unless_possible();
-    const Staged st = stage();
+    const Staged st = stage_for_run_as();
     const std::string tree = make_tree(st.dir + "/tree", false);
     const std::string out = st.dir + "/report";
     const std::string reference = tree + "/labs/00_pipeline/reference/order_depth.png";
@@ -93,7 +70,7 @@ TEST_CASE("course grade --run-as nobody: the child cannot read a reference or wr
 
 TEST_CASE("course grade --run-as: an output directory the user could write is refused") {
     skip_unless_possible();
-    const Staged st = stage();
+    const Staged st = stage_for_run_as();
     const std::string tree = make_tree(st.dir + "/tree", false);
     const std::string out = st.dir + "/open";
     fs::remove_all(out);
@@ -108,7 +85,7 @@ TEST_CASE("course grade --run-as: an output directory the user could write is re
 
 TEST_CASE("course grade --run-as nobody --shader-cache: each lab gets its own writable copy") {
     skip_unless_possible();
-    const Staged st = stage();
+    const Staged st = stage_for_run_as();
     const std::string tree = make_tree(st.dir + "/tree", false);
     const std::string cache = st.dir + "/shader-cache";
     const fw::test::CommandResult warm =
