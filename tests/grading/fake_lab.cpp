@@ -67,8 +67,8 @@ void write_text(const std::string& path, const std::string& text) { std::ofstrea
 // Runs the real lab with our arguments and waits for it: FAKE_LAB_REAL_COPY
 // when set (a copy another user may run), else the build's.
 int run_real(char** argv) {
-    const std::string real = env("FAKE_LAB_REAL_COPY").empty() ? FAKE_LAB_REAL
-                                                                : env("FAKE_LAB_REAL_COPY");
+    const std::string real =
+        env("FAKE_LAB_REAL_COPY").empty() ? FAKE_LAB_REAL : env("FAKE_LAB_REAL_COPY");
     pid_t pid = fork();
     if (pid == 0) {
         execv(real.c_str(), argv);
