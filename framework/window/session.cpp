@@ -4,14 +4,20 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <dlfcn.h>
 #include <imgui.h>
+#include <link.h>
+#include <unistd.h>
 
 #include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include "framework/error.hpp"
 
@@ -177,46 +183,107 @@ std::string use_software_renderer() {
     return note;
 }
 
+// Set in the environment of `lab run` started again on the software
+// renderer: what the GPU driver offered, for the notice and the errors.
+constexpr const char* kGpuShortfall = "LAB_RUN_GPU_SHORTFALL";
+
+// Starts this very command again, from the start, in a fresh process: the
+// drivers then load once, reading the environment set for the software
+// renderer, and nothing of the refused driver stays loaded (an unloaded
+// driver's caches cannot be freed or even named any more). Returns only when
+// that cannot be done.
+void exec_self() {
+    std::ifstream in("/proc/self/cmdline", std::ios::binary);
+    const std::string cmdline{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (cmdline.empty()) return;
+    std::vector<char*> argv;
+    for (size_t i = 0; i < cmdline.size(); i = cmdline.find('\0', i) + 1)
+        argv.push_back(const_cast<char*>(cmdline.c_str() + i));
+    argv.push_back(nullptr);
+    std::fflush(nullptr);
+    execv("/proc/self/exe", argv.data());
+}
+
+// GLFW started again: an X server with no other client (Xvfb, as xvfb-run
+// starts it) resets when the last connection closes, and refuses connections
+// until it has: try for up to two seconds.
+bool init_glfw_patiently() {
+    for (int attempt = 0; attempt < 40; ++attempt) {
+        if (glfwInit()) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return false;
+}
+
+// Keeps every loaded library mapped from now on. glfwTerminate unloads the
+// GL driver; a leak checker at exit then cannot name a driver's leftovers
+// (it reports "<unknown module>"), so they cannot be told from ours.
+void keep_libraries_loaded() {
+    std::vector<std::string> names;
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void* out) {
+            if (info->dlpi_name && *info->dlpi_name)
+                static_cast<std::vector<std::string>*>(out)->push_back(info->dlpi_name);
+            return 0;
+        },
+        &names);
+    for (const std::string& name : names)
+        dlopen(name.c_str(), RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+}
+
 }  // namespace
 
 GlfwLibrary::GlfwLibrary(const std::string& lab_id) : lab_id_(lab_id) {
     glfwSetErrorCallback(remember_glfw_error);
-    if (!glfwInit()) no_window("GLFW could not initialise", lab_id);
+    const bool again = std::getenv(kGpuShortfall) != nullptr;
+    if (!(again ? init_glfw_patiently() : glfwInit()))
+        no_window("GLFW could not initialise", lab_id);
 }
 
-GlfwLibrary::~GlfwLibrary() { glfwTerminate(); }
+GlfwLibrary::~GlfwLibrary() {
+    keep_libraries_loaded();  // the process is ending
+    glfwTerminate();
+}
+
+void GlfwLibrary::terminate() { glfwTerminate(); }
 
 void GlfwLibrary::restart() {
     glfwTerminate();
-    // An X server with no other client (Xvfb, as xvfb-run starts it) resets
-    // when GLFW's connection closes, and refuses connections until it has:
-    // try again for up to two seconds.
-    for (int attempt = 0; attempt < 40; ++attempt) {
-        if (glfwInit()) return;
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    no_window("GLFW could not initialise again", lab_id_);
+    if (!init_glfw_patiently()) no_window("GLFW could not initialise again", lab_id_);
 }
 
 GlfwWindow::GlfwWindow(GlfwLibrary& glfw, const std::string& lab_id, const std::string& title,
                        int width, int height) {
     std::string gpu_why;
-    window_ = try_window(title, width, height, gpu_why);
+    if (const char* handed = std::getenv(kGpuShortfall)) {
+        // Started again on the software renderer: this is its try.
+        gpu_why = handed;
+        unsetenv(kGpuShortfall);
+    } else {
+        window_ = try_window(title, width, height, gpu_why);
+        if (!window_) {
+            if (software_forced())
+                no_gl43("the driver " + gpu_why + " (" + variable_state("LIBGL_ALWAYS_SOFTWARE") +
+                            ": that is already Mesa's software renderer)",
+                        lab_id);
+            gpu_why += use_software_renderer();
+            setenv(kGpuShortfall, gpu_why.c_str(), 1);
+            glfw.terminate();
+            exec_self();
+            // No /proc: the drivers load again in this process instead.
+            unsetenv(kGpuShortfall);
+            glfw.restart();
+        }
+    }
     if (!window_) {
-        if (software_forced())
-            no_gl43("the driver " + gpu_why + " (" + variable_state("LIBGL_ALWAYS_SOFTWARE") +
-                        ": that is already Mesa's software renderer)",
-                    lab_id);
-        const std::string override_note = use_software_renderer();
-        glfw.restart();  // a driver reads LIBGL_ALWAYS_SOFTWARE when it loads
         std::string software_why;
         window_ = try_window(title, width, height, software_why);
         if (!window_)
-            no_gl43("the GPU driver " + gpu_why + override_note +
-                        ", and Mesa's software renderer (llvmpipe) " + software_why,
+            no_gl43("the GPU driver " + gpu_why + ", and Mesa's software renderer (llvmpipe) " +
+                        software_why,
                     lab_id);
         software_notice_ = "Software rendering (llvmpipe): the GPU driver " + gpu_why +
-                           override_note + ", and lab run needs OpenGL 4.3 core";
+                           ", and lab run needs OpenGL 4.3 core";
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);

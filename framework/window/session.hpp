@@ -18,6 +18,8 @@ public:
     GlfwLibrary(const GlfwLibrary&) = delete;
     GlfwLibrary& operator=(const GlfwLibrary&) = delete;
 
+    // glfwTerminate (GLFW may be terminated twice). No window may be open.
+    void terminate();
     // glfwTerminate, then glfwInit again, so that the GL driver is loaded
     // afresh and reads the environment again. No window may be open.
     void restart();
@@ -29,8 +31,10 @@ private:
 // A resizable window whose GL 4.3 core context (not forward-compatible,
 // single-sampled, no sRGB) is made current. When the driver cannot give that
 // context (it fails, or hands back an older version or another profile), the
-// window is made again on Mesa's software renderer, llvmpipe: `glfw` is
-// restarted with LIBGL_ALWAYS_SOFTWARE=1 and GALLIUM_DRIVER=llvmpipe set.
+// window is made again on Mesa's software renderer, llvmpipe: the command
+// starts again in the same process (execv of /proc/self/exe) with
+// LIBGL_ALWAYS_SOFTWARE=1 and GALLIUM_DRIVER=llvmpipe set, so that only the
+// software driver is ever loaded in it; without /proc, `glfw` is restarted.
 // Throws EnvironmentError, naming the version the driver offers and the
 // offscreen alternatives (`lab serve`, `lab render`), when that fails too or
 // when software rendering was already forced.

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -20,7 +21,11 @@ std::string out_dir() {
     std::string name = tc ? tc->m_name : "unnamed";
     for (char& c : name)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    std::filesystem::path dir = std::filesystem::path(LAB_TEST_OUT_DIR) / name;
+    // A test that runs once per backend (serve.osmesa and serve.egl run side
+    // by side) writes under its backend's name, so the runs never share a file.
+    std::filesystem::path dir = std::filesystem::path(LAB_TEST_OUT_DIR);
+    if (const char* backend = std::getenv("LAB_BACKEND"); backend && *backend) dir /= backend;
+    dir /= name;
     std::filesystem::create_directories(dir);
     return dir.string();
 }

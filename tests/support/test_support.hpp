@@ -33,7 +33,8 @@ bool backend_required(const std::string& backend);
 // test's output, and the caller leaves that part out and runs the rest.
 void skip_part_without(const std::string& backend, const std::string& what, const std::string& why);
 
-// Directory for files a test writes (build/test-out/<test name>/), created.
+// Directory for files a test writes, created: build/test-out/<test name>/,
+// or build/test-out/<backend>/<test name>/ when $LAB_BACKEND names one.
 std::string out_dir();
 // The build's bin directory (where `lab` lives) and the source tree.
 std::string bin_dir();

@@ -27,7 +27,7 @@ using serve_test::Served;
 
 namespace {
 
-// Waits until the JavaScript expression `condition` is true in the page (10 s
+// Waits until the JavaScript expression `condition` is true in the page (30 s
 // at most) and returns the value of `value` then; `what` names the wait in
 // the failure.
 json wait_for(Browser& browser, const std::string& condition, const std::string& value,
@@ -36,7 +36,7 @@ json wait_for(Browser& browser, const std::string& condition, const std::string&
         "new Promise((ok, fail) => { const t0 = Date.now(); (function poll() { let done = false;"
         " try { done = (" +
         condition + "); } catch (e) {} if (done) ok(" + value +
-        "); else if (Date.now() - t0 > 10000) fail(new Error(" +
+        "); else if (Date.now() - t0 > 30000) fail(new Error(" +
         json("timed out waiting for " + what + "; status: ").dump() +
         " + document.getElementById('status').textContent)); else setTimeout(poll, 20); })(); })";
     return browser.evaluate(js);

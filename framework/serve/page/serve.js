@@ -143,6 +143,11 @@ function showProblems(problems) {
 
 async function showFrame(meta, blob) {
   const image = await createImageBitmap(blob);
+  // Decoding finishes in any order: a frame older than the one shown is dropped.
+  if (state.meta && state.meta.seq >= meta.seq) {
+    image.close();
+    return;
+  }
   if (canvas.width !== image.width || canvas.height !== image.height) {
     canvas.width = image.width;
     canvas.height = image.height;
