@@ -22,6 +22,7 @@
 #include <thread>
 
 #include "framework/error.hpp"
+#include "grading/isolation.hpp"
 #include "grading/sandbox.hpp"
 
 extern char** environ;
@@ -228,6 +229,7 @@ struct ChildStart {
     const RunAsUser* user;
     rlim_t cpu_seconds = cpu_seconds_for(limits);
     const SeccompFilter* filter = nullptr;
+    const std::vector<int>* cgroup_fds = nullptr;  // "0" into each: join the lab's cgroup
     pid_t parent = getpid();
     int devnull = -1;  // its stdin
     int out = -1;      // its stdout and stderr
@@ -237,6 +239,9 @@ struct ChildStart {
 // descriptors, limits and user.
 [[noreturn]] void exec_child(const ChildStart& c) {
     setpgid(0, 0);  // its own group: a timeout kills whatever it started too
+    if (c.cgroup_fds)
+        for (const int fd : *c.cgroup_fds)
+            if (write(fd, "0", 1) != 1) child_fail("joining the lab's cgroup");
     if (dup2(c.devnull, 0) < 0 || dup2(c.out, 1) < 0 || dup2(c.out, 2) < 0) child_fail("dup2");
     if (chdir(c.dir.c_str()) != 0) child_fail("chdir to the work directory");
     set_limit(RLIMIT_CPU, c.cpu_seconds, "RLIMIT_CPU");
@@ -249,13 +254,17 @@ struct ChildStart {
     // child before main().
     set_limit(RLIMIT_AS, c.limits.memory_cap, "RLIMIT_AS");
 #endif
+    // From here on the lab's own process, in new namespaces under an init.
+    if (c.limits.namespaces) enter_namespaces(child_fail);
     if (c.user) {
         // Counted per user at each fork: a fork bomb stops here.
         set_limit(RLIMIT_NPROC, kRunAsProcesses, "RLIMIT_NPROC");
         switch_user(*c.user);
     }
-    // Killed with course (set after setuid, which clears it).
-    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != c.parent) child_fail("prctl");
+    // Killed with course, or with the namespace's init (set after setuid,
+    // which clears it).
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || (!c.limits.namespaces && getppid() != c.parent))
+        child_fail("prctl");
     // Last: from here on no socket but AF_UNIX, no ptrace, ... (sandbox.hpp).
     if (c.filter && !c.filter->install()) child_fail("installing the seccomp filter");
     execve(c.argv[0], c.argv.data(), c.envp.data());
@@ -365,6 +374,12 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     static const SeccompFilter filter;  // built once, before any fork
     ChildStart start(argv, dir, limits, user, env);
     start.filter = &filter;
+    std::unique_ptr<LabCgroup> cgroup;
+    if (limits.cgroups) {
+        cgroup =
+            std::make_unique<LabCgroup>(*limits.cgroups, limits.resident_cap, limits.processes_cap);
+        start.cgroup_fds = &cgroup->join_fds();
+    }
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) throw fw::Error(std::string("pipe: ") + std::strerror(errno));
     start.devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
@@ -385,8 +400,16 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     ChildRun run = std::move(watch.run());
     if (!watch.killed()) run.status = exit_status(watch.wait_status(), start);
     lab_ended(pid);  // watch() has reaped it
-    // Whatever it left running, setsid() or not, dies with its lab.
-    if (const int strays = kill_strays(user))
+    if (cgroup) {
+        cgroup->kill_all();
+        if (cgroup->oom_kills() > 0 && !run.ok())
+            run.status = "killed for memory: more than " + mib_text(limits.resident_cap) +
+                         " in use (its cgroup's limit)";
+    }
+    // Whatever it left running, setsid() or not, dies with its lab. With a
+    // cgroup that has been found and killed already: then no process of the
+    // user outside it (another program's) is touched.
+    if (const int strays = kill_strays(cgroup ? nullptr : user))
         run.log += "\ncourse: killed " + std::to_string(strays) +
                    " process(es) the lab left running after it ended\n";
     return run;

@@ -17,6 +17,8 @@ namespace grading {
 
 constexpr std::uint64_t kMiB = 1024 * 1024;
 
+class CgroupRoot;
+
 struct ChildLimits {
     double timeout_seconds = 60.0;            // wall clock; then the whole group is killed
     std::uint64_t output_cap = 8 * kMiB;      // stdout + stderr together
@@ -25,6 +27,12 @@ struct ChildLimits {
     std::uint64_t work_dir_cap = 256 * kMiB;  // all files in its work directory
     std::uint64_t memory_cap = 8192 * kMiB;   // RLIMIT_AS (not under AddressSanitizer)
     int open_files = 256;                     // RLIMIT_NOFILE
+    // The privileged layers (isolation.hpp), where course found them usable:
+    // new namespaces for each child, and a cgroup with these two limits.
+    bool namespaces = false;
+    const CgroupRoot* cgroups = nullptr;
+    std::uint64_t resident_cap = 2048 * kMiB;  // the cgroup's memory limit
+    int processes_cap = 1024;                  // the cgroup's pids.max
 };
 
 // The user a child runs as (--run-as), resolved before any child starts.

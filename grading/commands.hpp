@@ -28,6 +28,9 @@ struct GradeOptions {
     // --shader-cache: a Mesa shader cache made by `course warm-cache`; each
     // lab's child starts from its own copy. Empty: Mesa's default.
     std::string shader_cache;
+    // --sandbox: auto uses every layer the machine allows; strict refuses to
+    // grade when namespaces or cgroups are missing.
+    std::string sandbox = "auto";
 };
 int grade_command(const GradeOptions& options);
 

@@ -22,6 +22,7 @@
 #include "framework/text.hpp"
 #include "grading/checks.hpp"
 #include "grading/commands.hpp"
+#include "grading/isolation.hpp"
 #include "grading/reports.hpp"
 #include "grading/sandbox.hpp"
 
@@ -239,15 +240,25 @@ int grade_command(const GradeOptions& options) {
 
     GradeRun run;
     run.backend = backend_name(options);
-    run.sandbox = {
-        "seccomp filter in every child (EPERM: " + fw::join(SeccompFilter::denied(), ", ") + ")",
-        "course is a child subreaper: what a lab leaves running is killed when it ends"};
-    if (as)
-        run.sandbox.push_back("--run-as " + as->name + ": RLIMIT_NPROC " +
-                              std::to_string(kRunAsProcesses) + ", every process of " + as->name +
-                              " killed after each lab");
-    run.sandbox.push_back(
-        "not used: PID, network, mount and IPC namespaces and cgroups (not implemented yet)");
+    // The privileged layers, where this machine allows them (isolation.hpp).
+    std::string namespaces_why, cgroups_why;
+    limits.namespaces = namespaces_usable(namespaces_why);
+    const std::unique_ptr<CgroupRoot> cgroups = CgroupRoot::open(cgroups_why);
+    limits.cgroups = cgroups.get();
+    run.sandbox = sandbox_layers(as, limits, namespaces_why, cgroups_why);
+    if (options.sandbox == "strict") {
+        std::vector<std::string> missing;
+        for (const SandboxLayer& layer : run.sandbox)
+            if (!layer.active && layer.name != "--run-as")
+                missing.push_back(layer.name + ": " + layer.detail);
+        if (!missing.empty())
+            throw fw::EnvironmentError(
+                "--sandbox strict: not grading, because these layers of the sandbox cannot be "
+                "used here: " +
+                fw::join(missing, "; ") +
+                ". Run course as root with CAP_SYS_ADMIN and a cgroup hierarchy it may write, "
+                "or grade with --sandbox auto");
+    }
     run.labs.resize(labs.size());
     // --jobs workers take labs in order; each lab is one child.
     std::mutex print_mutex;

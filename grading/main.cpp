@@ -39,6 +39,11 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     grade->add_option("--results", g.results, "Write results.json here (default: into --out)");
     grade->add_option("--shader-cache", g.shader_cache,
                       "Start each lab from a copy of this Mesa shader cache (course warm-cache)");
+    grade
+        ->add_option("--sandbox", g.sandbox,
+                     "auto: every sandbox layer the machine allows; strict: refuse to grade "
+                     "without namespaces and cgroups (default auto)")
+        ->check(CLI::IsMember({"auto", "strict"}));
     return {grade, [&g] { return grading::grade_command(g); }};
 }
 

@@ -268,7 +268,8 @@ std::string overview_html(const GradeRun& run) {
       << " / " << points(run.max_score()) << " points &middot; " << passed << " of " << total
       << " checks passed &middot; " << run.labs.size() << (run.labs.size() == 1 ? " lab" : " labs")
       << (run.backend.empty() ? "" : " &middot; backend " + escape_markup(run.backend))
-      << " &middot; " << points(run.seconds) << " s</p>\n";
+      << " &middot; " << points(run.seconds) << " s</p>\n"
+      << sandbox_html(run.sandbox);
     if (run.labs.empty()) {
         h << "<p>No labs were graded.</p>\n";
         return h.str();
@@ -282,6 +283,29 @@ std::string overview_html(const GradeRun& run) {
 }
 
 }  // namespace
+
+std::string sandbox_line(const std::vector<SandboxLayer>& layers) {
+    std::string line;
+    for (const SandboxLayer& layer : layers)
+        line += (line.empty() ? "" : "; ") + std::string(layer.active ? "on: " : "off: ") +
+                layer.name + " (" + layer.detail + ")";
+    return line;
+}
+
+std::string sandbox_html(const std::vector<SandboxLayer>& layers) {
+    if (layers.empty()) return "";
+    size_t active = 0;
+    std::string items;
+    for (const SandboxLayer& layer : layers) {
+        active += layer.active;
+        items += "<li>" + std::string(layer.active ? "" : "<em>not used:</em> ") + "<strong>" +
+                 escape_markup(layer.name) + "</strong>: " + escape_markup(layer.detail) +
+                 "</li>\n";
+    }
+    return "<details class=\"sandbox\"><summary>Sandbox: " + std::to_string(active) + " of " +
+           std::to_string(layers.size()) + " layers active</summary>\n<ul>\n" + items +
+           "</ul></details>\n";
+}
 
 std::string html_report(const GradeRun& run, const std::string& out_dir) {
     // The body first: it decides which images the <style> block must hold.

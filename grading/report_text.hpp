@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "grading/results.hpp"
 
@@ -33,6 +34,11 @@ std::string in_dir(const std::string& out_dir, const std::string& relative);
 
 // Writes `text` to `path`; throws fw::Error naming the path and the reason.
 void write_text_file(const std::string& path, const std::string& text);
+
+// The sandbox's layers: in one line (summary.txt), and as a collapsed HTML
+// list (index.html, and the overview in results.json).
+std::string sandbox_line(const std::vector<SandboxLayer>& layers);
+std::string sandbox_html(const std::vector<SandboxLayer>& layers);
 
 // index.html: reads the images the checks name (relative to out_dir).
 std::string html_report(const GradeRun& run, const std::string& out_dir);

@@ -153,7 +153,7 @@ std::string overview_html(const GradeRun& run) {
     }
     std::string h = "<p><strong>" + points(run.score()) + " / " + points(run.max_score()) +
                     " points</strong>; " + std::to_string(passed) + " of " + std::to_string(total) +
-                    " checks passed.</p>\n";
+                    " checks passed.</p>\n" + sandbox_html(run.sandbox);
     if (!run.labs.empty())
         h += "<table><tr><th>lab</th><th>score</th><th>checks passed</th><th>status</th></tr>\n" +
              rows + "</table>\n";
@@ -206,7 +206,13 @@ std::string results_json(const GradeRun& run, const std::string& out_dir, size_t
     results["execution_time"] = std::round(run.seconds * 1000.0) / 1000.0;
     results["output"] = overview_html(run);
     results["output_format"] = "html";
-    results["extra_data"] = {{"backend", clean_text(run.backend)}, {"labs", labs}};
+    nlohmann::ordered_json sandbox = nlohmann::ordered_json::array();
+    for (const SandboxLayer& layer : run.sandbox)
+        sandbox.push_back({{"layer", clean_text(layer.name)},
+                           {"active", layer.active},
+                           {"detail", clean_text(layer.detail)}});
+    results["extra_data"] = {
+        {"backend", clean_text(run.backend)}, {"sandbox", sandbox}, {"labs", labs}};
     results["tests"] = tests;
     return results.dump(2) + "\n";
 }
@@ -409,7 +415,8 @@ std::string summary_table(const GradeRun& run) {
              " checks passed, " + std::to_string(labs) + (labs == 1 ? " lab, " : " labs, ") +
              report::fixed(run.seconds, 1) + " s" +
              (run.backend.empty() ? "" : ", backend " + ascii(run.backend)) + "\n";
-    if (!run.sandbox.empty()) table += "Sandbox: " + ascii(fw::join(run.sandbox, "; ")) + "\n";
+    if (!run.sandbox.empty())
+        table += "Sandbox: " + ascii(report::sandbox_line(run.sandbox)) + "\n";
     return table;
 }
 

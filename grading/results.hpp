@@ -39,13 +39,20 @@ struct LabResult {
     bool passed() const;  // every check passed
 };
 
+// One layer of the sandbox around the lab children.
+struct SandboxLayer {
+    std::string name;  // "seccomp filter", "namespaces", ...
+    bool active = false;
+    std::string detail;  // what it does, or why it is not used
+};
+
 struct GradeRun {
     std::vector<LabResult> labs;
     std::string backend;  // as asked: auto, osmesa, egl
     double seconds = 0.0;
-    // The sandbox's layers that were active, and those that were not, one
-    // line each (grading/sandbox.hpp), for summary.txt.
-    std::vector<std::string> sandbox;
+    // The sandbox's layers, active or not (grading/sandbox.hpp), for
+    // summary.txt, index.html and results.json.
+    std::vector<SandboxLayer> sandbox;
 
     double score() const;
     double max_score() const;

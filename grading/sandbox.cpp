@@ -21,7 +21,10 @@
 #include <thread>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/child.hpp"
+#include "grading/isolation.hpp"
+#include "grading/results.hpp"
 
 namespace grading {
 
@@ -211,6 +214,41 @@ int kill_strays(const RunAsUser* user) {
         for (pid_t pid : strays) waitpid(pid, nullptr, WNOHANG);
     }
     return killed;
+}
+
+std::vector<SandboxLayer> sandbox_layers(const RunAsUser* user, const ChildLimits& limits,
+                                         const std::string& namespaces_why,
+                                         const std::string& cgroups_why) {
+    std::vector<SandboxLayer> layers = {
+        {"seccomp filter", true,
+         "in every lab child; fails with EPERM: " + fw::join(SeccompFilter::denied(), ", ")},
+        {"child subreaper", true,
+         "course adopts whatever a lab leaves running (a setsid() daemon too) and kills it when "
+         "the lab ends"}};
+    if (user)
+        layers.push_back({"--run-as " + user->name, true,
+                          "the lab runs as " + user->name + " with RLIMIT_NPROC " +
+                              std::to_string(kRunAsProcesses) +
+                              (limits.cgroups ? ""
+                                              : "; every process of " + user->name +
+                                                    " is killed after each lab (no cgroup here)")});
+    else
+        layers.push_back(
+            {"--run-as", false, "the labs run as course's own user (no --run-as USER given)"});
+    if (limits.namespaces)
+        layers.push_back({"namespaces", true,
+                          "new PID, network (loopback only), mount and IPC namespaces: the lab "
+                          "sees only its own processes, and all of them end with it"});
+    else
+        layers.push_back({"namespaces", false, namespaces_why});
+    if (limits.cgroups)
+        layers.push_back({limits.cgroups->describe(), true,
+                          "memory " + mib_text(limits.resident_cap) + ", " +
+                              std::to_string(limits.processes_cap) +
+                              " processes; everything in it is killed when the lab ends"});
+    else
+        layers.push_back({"cgroup", false, cgroups_why});
+    return layers;
 }
 
 }  // namespace grading

@@ -19,6 +19,9 @@
 namespace grading {
 
 struct RunAsUser;
+struct ChildLimits;
+class CgroupRoot;
+struct SandboxLayer;
 
 // The seccomp program, compiled (by libseccomp) before fork, so that the
 // forked child only has to hand it to the kernel: no allocation there.
@@ -47,6 +50,12 @@ void lab_ended(pid_t pid);
 // adopted children, and with `user` every process of that user. Returns how
 // many it killed.
 int kill_strays(const RunAsUser* user);
+
+// Every layer, active or not, as the reports list them. `namespaces_why` and
+// `cgroups_why` say why those are missing when they are.
+std::vector<SandboxLayer> sandbox_layers(const RunAsUser* user, const ChildLimits& limits,
+                                         const std::string& namespaces_why,
+                                         const std::string& cgroups_why);
 
 // RLIMIT_NPROC of a child under --run-as: processes and threads of that
 // user, all its labs together (llvmpipe starts a thread per core in each).

@@ -40,6 +40,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -48,6 +49,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -104,7 +106,37 @@ int try_network(int port) {
     return 3;
 }
 
-int try_ptrace(pid_t course) {
+// The process named "course" that this lab can see in /proc, or 0: in a
+// PID namespace of its own it sees none.
+pid_t find_course() {
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator("/proc", ec)) {
+        std::ifstream comm(e.path() / "comm");
+        std::string name;
+        if (std::getline(comm, name) && name == "course")
+            return static_cast<pid_t>(std::atoi(e.path().filename().c_str()));
+    }
+    return 0;
+}
+
+int try_ptrace() {
+    const pid_t course = find_course();
+    std::printf("ptrace: my parent is pid %d; processes visible: ", static_cast<int>(getppid()));
+    std::error_code ec;
+    int visible = 0;
+    for (const auto& e : std::filesystem::directory_iterator("/proc", ec))
+        visible += std::isdigit(static_cast<unsigned char>(e.path().filename().c_str()[0])) != 0;
+    std::printf("%d\n", visible);
+    if (course == 0) {
+        std::printf("ptrace: course: NOT VISIBLE in /proc\n");
+        // PID 1 is then the namespace's init, a copy of course.
+        std::ifstream init("/proc/1/environ");
+        std::string text;
+        std::getline(init, text, '\0');
+        std::printf("ptrace: read /proc/1/environ of the init: %s\n",
+                    init ? "READ" : std::strerror(errno));
+        return 3;
+    }
     errno = 0;
     const long rc = ptrace(PTRACE_ATTACH, course, nullptr, nullptr);
     std::printf("ptrace: attach to course: %s\n", rc == 0 ? "ATTACHED" : std::strerror(errno));
@@ -269,7 +301,7 @@ int main(int argc, char** argv) {
     } else if (mode == "network") {
         return try_network(std::atoi(env("FAKE_LAB_PORT").c_str()));
     } else if (mode == "ptrace") {
-        return try_ptrace(getppid());
+        return try_ptrace();
     } else if (mode == "daemon") {
         leave_daemon(env("FAKE_LAB_SNOOP_WRITE"));
         return run_real(argv);
@@ -287,6 +319,48 @@ int main(int argc, char** argv) {
             }
         }
         std::printf("forkbomb: made %d of %d processes\n", made, wanted);
+        return 3;
+    } else if (mode == "alloc") {
+        // 16 GiB: in one piece, then (FAKE_LAB_TOUCH=1) 256 MiB at a time,
+        // each written to, so that it is really resident.
+        void* whole = std::malloc(size_t{16} << 30);
+        std::printf("alloc: 16 GiB at once: %s\n", whole ? "GOT IT" : "refused");
+        std::free(whole);
+        if (env("FAKE_LAB_TOUCH") == "1") {
+            size_t got = 0;
+            for (; got < 64; ++got) {
+                char* piece = static_cast<char*>(std::malloc(size_t{256} << 20));
+                if (!piece) break;
+                std::memset(piece, 1, size_t{256} << 20);
+                std::printf("alloc: %zu MiB resident\n", (got + 1) * 256);
+                std::fflush(stdout);
+            }
+            std::printf("alloc: stopped at %zu MiB: %s\n", got * 256, std::strerror(errno));
+        }
+        return 3;
+    } else if (mode == "fds") {
+        int opened = 0;
+        while (open("/dev/null", O_RDONLY) >= 0) ++opened;
+        std::printf("fds: opened %d, then: %s\n", opened, std::strerror(errno));
+        return 3;
+    } else if (mode == "longline") {
+        const std::string line(10 << 20, 'y');  // 10 MiB, no newline
+        std::fwrite(line.data(), 1, line.size(), stdout);
+        return 3;
+    } else if (mode == "notutf8") {
+        std::printf("notutf8: \xff\xfe bad \xc3\x28 bytes, \x1b[31mred\x1b[0m, <b>&amp;</b>\n");
+        std::fflush(stdout);
+        return run_real(argv);
+    } else if (mode == "outside") {
+        // Writes where a lab has no business (the test names the files:
+        // beside the references, into the report directory, ...).
+        std::istringstream paths(env("FAKE_LAB_OUTSIDE"));
+        for (std::string path; std::getline(paths, path, ':');) {
+            std::ofstream f(path);
+            f << "planted\n";
+            std::printf("outside: write %s: %s\n", path.c_str(),
+                        f ? "WRITTEN" : std::strerror(errno));
+        }
         return 3;
     } else if (mode == "snoop") {
         snoop(env("FAKE_LAB_SNOOP_READ"), env("FAKE_LAB_SNOOP_WRITE"));

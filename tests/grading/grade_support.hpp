@@ -33,12 +33,14 @@ struct Graded {
     double seconds = 0.0;
 };
 
-// `env... course grade ARGS --out OUT`, then results.json.
-inline Graded grade(const std::string& env, const std::string& args, const std::string& out) {
+// `env... [wrapper] course grade ARGS --out OUT`, then results.json. The
+// wrapper is a command line that runs the rest (a sandbox profile's).
+inline Graded grade(const std::string& env, const std::string& args, const std::string& out,
+                    const std::string& wrapper = "") {
     fs::remove_all(out);
     const auto start = std::chrono::steady_clock::now();
-    fw::test::CommandResult r =
-        fw::test::run_command(env + " " + course() + " grade " + args + " --out " + out);
+    fw::test::CommandResult r = fw::test::run_command(env + " " + wrapper + " " + course() +
+                                                      " grade " + args + " --out " + out);
     Graded g;
     g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     g.exit_code = r.exit_code;

@@ -1,10 +1,16 @@
-// The sandbox around each lab's child (grading/sandbox.hpp), attacked by real
-// submissions (tests/grading/fake_lab.cpp), each graded beside an honest lab:
-// the network, ptrace and process_vm_readv on course, a setsid() daemon that
-// waits for its lab to be graded, and a fork bomb (bounded by this test).
-// The lab at fault loses what it did not earn, the honest lab keeps full
-// marks, and when course exits nothing of the run is left running. The
-// --run-as cases need root and a user `nobody`; they skip without them.
+// The sandbox around each lab's child (grading/sandbox.hpp, isolation.hpp),
+// attacked by real submissions (tests/grading/fake_lab.cpp), each graded
+// beside an honest lab, under two profiles:
+//   - privileged: course as root with CAP_SYS_ADMIN, as on a staff machine
+//     or CI: namespaces and cgroups on top of the unprivileged layers;
+//   - gradescope: the same root without CAP_SYS_ADMIN (setpriv) and with no
+//     cgroup hierarchy (a read-only tmpfs over /sys/fs/cgroup in a mount
+//     namespace of the test's), as in Gradescope's container: seccomp,
+//     the subreaper, --run-as and rlimits alone.
+// Without root only the machine's own (unprivileged) profile runs.
+// For each: the lab at fault loses what it did not earn, the honest lab keeps
+// full marks, the reports are whole, and when course exits nothing of the
+// run is left. The --run-as cases need root and a user `nobody`.
 #include <arpa/inet.h>
 #include <dirent.h>
 #include <fcntl.h>
@@ -33,6 +39,23 @@ int processes_named(const std::string& name) {
         std::string text;
         std::getline(comm, text);
         count += text == name;
+    }
+    if (proc) closedir(proc);
+    return count;
+}
+
+// The processes whose real user is `uid`.
+int processes_of_uid(uid_t uid) {
+    int count = 0;
+    DIR* proc = opendir("/proc");
+    while (dirent* e = proc ? readdir(proc) : nullptr) {
+        if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
+        std::ifstream status(std::string("/proc/") + e->d_name + "/status");
+        for (std::string line; std::getline(status, line);)
+            if (line.rfind("Uid:", 0) == 0) {
+                count += std::stoul(line.substr(4)) == uid;
+                break;
+            }
     }
     if (proc) closedir(proc);
     return count;
@@ -88,59 +111,139 @@ void check_transforms_full(const Graded& g) {
     CHECK(earned == max);
 }
 
-}  // namespace
+// A way of running course: its name, the command line put before it, and
+// whether namespaces and cgroups are expected on.
+struct Profile {
+    std::string name;
+    std::string wrapper;
+    bool privileged = false;
+};
 
-TEST_CASE("sandbox: no network for a lab, but for AF_UNIX") {
-    Listener listener;
-    const std::string out = fw::test::out_dir() + "/report";
-    Graded g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=network FAKE_LAB_PORT=" +
-                         std::to_string(listener.port),
-                     "pipeline transforms --lab " + fake_lab(), out);
-    CHECK(g.exit_code == 1);
-    fw::test::check_mentions(g.output, {"network: tcp socket: Operation not permitted",
-                                        "network: udp6 socket: Operation not permitted",
-                                        "network: unix socket: opened"});
-    CHECK(g.output.find("CONNECTED") == std::string::npos);
-    CHECK(g.output.find("RESOLVED") == std::string::npos);
-    CHECK(!listener.connected());
-    check_transforms_full(g);
+const char* const kGradescopeWrapper =
+    "unshare --mount sh -c 'mount -t tmpfs -o ro none /sys/fs/cgroup && exec setpriv "
+    "--bounding-set=-sys_admin -- \"$@\"' sh";
+
+// The profiles this machine can run: privileged and gradescope as root
+// where course's strict sandbox works, else the machine's own.
+const std::vector<Profile>& profiles() {
+    static const std::vector<Profile> list = [] {
+        const std::string out = fw::test::out_dir() + "/strict-probe";
+        fs::remove_all(out);
+        const fw::test::CommandResult strict =
+            fw::test::run_command(course() + " grade pipeline --sandbox strict --out " + out);
+        if (strict.exit_code == 0)
+            return std::vector<Profile>{{"privileged", "", true},
+                                        {"gradescope", kGradescopeWrapper, false}};
+        std::printf("SKIP: the privileged profile: course grade --sandbox strict says:\n%s\n",
+                    strict.output.c_str());
+        return std::vector<Profile>{{"unprivileged", "", false}};
+    }();
+    return list;
 }
 
-TEST_CASE("sandbox: no ptrace or process_vm_readv on course") {
-    const std::string out = fw::test::out_dir() + "/report";
-    Graded g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=ptrace",
-                     "pipeline transforms --lab " + fake_lab(), out);
-    CHECK(g.exit_code == 1);
-#if !defined(__SANITIZE_ADDRESS__)
-    // (LeakSanitizer needs ptrace: sanitized builds leave it allowed.)
-    fw::test::check_mentions(g.output, {"ptrace: attach to course: Operation not permitted"});
-#endif
-    fw::test::check_mentions(g.output,
-                             {"ptrace: process_vm_readv of course: Operation not permitted"});
-    CHECK(g.output.find("ATTACHED") == std::string::npos);
-    check_transforms_full(g);
-    if (can_run_as_nobody()) {
+// The run's summary names the layers its profile has.
+void check_layers(const Graded& g, const Profile& p) {
+    const std::string state = p.privileged ? "on: " : "off: ";
+    fw::test::check_mentions(g.output, {"on: seccomp filter", "on: child subreaper",
+                                        state + "namespaces", state + "cgroup"});
+}
+
+// Nothing of the run is left: no fake_lab, no daemon, no process of nobody.
+void check_nothing_left(bool run_as) {
+    CHECK(processes_named("fake_lab") == 0);
+    CHECK(processes_named("lab-daemon") == 0);
+    if (run_as) CHECK(processes_of_uid(getpwnam("nobody")->pw_uid) == 0);
+}
+
+// `mode` in lab 0 beside an honest lab 1 (as nobody when `run_as`): lab 0
+// fails, lab 1 keeps full marks, the reports are whole, nothing is left.
+Graded attack(const Profile& p, const std::string& mode, const std::string& env, bool run_as,
+              int exit_code = 1) {
+    CAPTURE(p.name);
+    CAPTURE(mode);
+    Graded g;
+    if (run_as) {
         const Staged st = stage_for_run_as();
         const std::string tree = make_tree(st.dir + "/tree", false);
-        Graded as =
-            grade(st.env + " LAB_ROOT=" + tree + " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=ptrace",
-                  "pipeline --run-as nobody --lab " + st.fake, st.dir + "/report");
-        // Another user may not read course's environment.
-        fw::test::check_mentions(as.output, {"/environ: Permission denied"});
+        const fs::path transforms = fs::path(fw::test::source_dir()) / "labs/01_transforms";
+        fs::create_directories(tree + "/labs/01_transforms");
+        fs::copy_file(transforms / "checkpoints.json",
+                      tree + "/labs/01_transforms/checkpoints.json");
+        fs::copy(transforms / "reference", tree + "/labs/01_transforms/reference");
+        g = grade(st.env + " LAB_ROOT=" + tree + " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=" + mode +
+                      " " + env,
+                  "pipeline transforms --run-as nobody --lab " + st.fake,
+                  fw::test::out_dir() + "/" + p.name + "-" + mode, p.wrapper);
+        fs::remove_all(st.dir);
+    } else {
+        g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=" + mode + " " + env,
+                  "pipeline transforms --lab " + fake_lab(),
+                  fw::test::out_dir() + "/" + p.name + "-" + mode, p.wrapper);
+    }
+    CHECK(g.exit_code == exit_code);
+    check_layers(g, p);
+    check_transforms_full(g);
+    check_nothing_left(run_as);
+    return g;
+}
+
+}  // namespace
+
+TEST_CASE("sandbox: no network for a lab, but for AF_UNIX; no DNS") {
+    for (const Profile& p : profiles()) {
+        Listener listener;
+        const Graded g =
+            attack(p, "network", "FAKE_LAB_PORT=" + std::to_string(listener.port), false);
+        fw::test::check_mentions(g.output, {"network: tcp socket: Operation not permitted",
+                                            "network: udp6 socket: Operation not permitted",
+                                            "network: unix socket: opened"});
+        CHECK(g.output.find("CONNECTED") == std::string::npos);
+        CHECK(g.output.find("RESOLVED") == std::string::npos);
+        CHECK(!listener.connected());
     }
 }
 
+TEST_CASE("sandbox: no ptrace, process_vm_readv or /proc of course") {
+    for (const Profile& p : profiles())
+        for (const bool run_as : {false, true}) {
+            if (run_as && !can_run_as_nobody()) continue;
+            CAPTURE(run_as);
+            const Graded g = attack(p, "ptrace", "", run_as);
+            CHECK(g.output.find("ATTACHED") == std::string::npos);
+            // (Without --run-as the lab is course's own user, who may read
+            // course's /proc: that is what --run-as is for.)
+            if (p.privileged) {
+                // Its own PID namespace: course is not there to attack, and
+                // its init is root's alone.
+                fw::test::check_mentions(g.output,
+                                         {"my parent is pid 1;", "course: NOT VISIBLE in /proc"});
+                if (run_as)
+                    fw::test::check_mentions(g.output,
+                                             {"/proc/1/environ of the init: Permission denied"});
+                continue;
+            }
+            CHECK(g.output.find("of course: READ") == std::string::npos);
+#if !defined(__SANITIZE_ADDRESS__)
+            // (LeakSanitizer needs ptrace: sanitized builds leave it allowed.)
+            fw::test::check_mentions(g.output,
+                                     {"ptrace: attach to course: Operation not permitted"});
+#endif
+            fw::test::check_mentions(
+                g.output, {"ptrace: process_vm_readv of course: Operation not permitted"});
+            // Another user may not read course's environment.
+            if (run_as) fw::test::check_mentions(g.output, {"/environ: Permission denied"});
+        }
+}
+
 TEST_CASE("sandbox: a setsid() daemon dies with its lab and writes nothing afterwards") {
-    const std::string target = open_dir("daemon-target");
-    const std::string out = fw::test::out_dir() + "/report";
-    Graded g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=daemon FAKE_LAB_SNOOP_WRITE=" + target,
-                     "pipeline transforms --lab " + fake_lab(), out);
-    CHECK(g.exit_code == 0);  // the daemon's lab is the real one otherwise
-    check_transforms_full(g);
-    CHECK(processes_named("lab-daemon") == 0);
-    std::this_thread::sleep_for(std::chrono::milliseconds(3500));  // past the daemon's wait
-    CHECK(!fs::exists(target + "/daemon-was-here.txt"));
-    CHECK(processes_named("lab-daemon") == 0);
+    for (const Profile& p : profiles()) {
+        CAPTURE(p.name);
+        const std::string target = open_dir("daemon-target-" + p.name);
+        const Graded g = attack(p, "daemon", "FAKE_LAB_SNOOP_WRITE=" + target, false, 0);
+        std::this_thread::sleep_for(std::chrono::milliseconds(3500));  // past the daemon's wait
+        CHECK(!fs::exists(target + "/daemon-was-here.txt"));
+        CHECK(processes_named("lab-daemon") == 0);
+    }
 }
 
 TEST_CASE("sandbox: a fork bomb is bounded, and nothing of it is left") {
@@ -148,14 +251,81 @@ TEST_CASE("sandbox: a fork bomb is bounded, and nothing of it is left") {
         std::printf("SKIP: RLIMIT_NPROC applies under --run-as, which needs root and 'nobody'\n");
         return;
     }
-    const Staged st = stage_for_run_as();
-    const std::string tree = make_tree(st.dir + "/tree", false);
-    // The test's own bound: at most 3000 processes, whatever course does.
-    Graded g = grade(st.env + " LAB_ROOT=" + tree +
-                         " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=forkbomb FAKE_LAB_FORKS=3000",
-                     "pipeline --run-as nobody --lab " + st.fake, st.dir + "/report");
-    CHECK(g.exit_code == 1);
-    fw::test::check_mentions(g.output, {"forkbomb: fork", "Resource temporarily unavailable"});
-    CHECK(g.output.find("made 3000 of 3000") == std::string::npos);
-    CHECK(processes_named("fake_lab") == 0);
+    for (const Profile& p : profiles()) {
+        // The test's own bound: at most 3000 processes, whatever course does.
+        const Graded g = attack(p, "forkbomb", "FAKE_LAB_FORKS=3000", true);
+        fw::test::check_mentions(g.output, {"forkbomb: fork", "Resource temporarily unavailable"});
+        CHECK(g.output.find("made 3000 of 3000") == std::string::npos);
+    }
+}
+
+TEST_CASE("sandbox: 16 GiB of memory is refused; resident memory stops at the cgroup's limit") {
+    for (const Profile& p : profiles()) {
+#if defined(__SANITIZE_ADDRESS__)
+        // No RLIMIT_AS under AddressSanitizer: only a cgroup bounds it here.
+        if (!p.privileged) continue;
+#endif
+        // Resident memory is only asked for where a cgroup bounds it at 2 GiB.
+        const Graded g = attack(p, "alloc", p.privileged ? "FAKE_LAB_TOUCH=1" : "", false);
+#if !defined(__SANITIZE_ADDRESS__)
+        fw::test::check_mentions(g.output, {"alloc: 16 GiB at once: refused"});
+#endif
+        if (p.privileged) {
+            fw::test::check_mentions(g.output, {"killed for memory: more than 2048 MiB in use"});
+            CHECK(g.output.find("alloc: 2048 MiB resident") == std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("sandbox: descriptors, a 10 MiB line and bytes that are not UTF-8") {
+    for (const Profile& p : profiles()) {
+        const Graded fds = attack(p, "fds", "", false);
+        fw::test::check_mentions(fds.output, {"fds: opened", "Too many open files"});
+        const Graded line = attack(p, "longline", "", false);
+        fw::test::check_mentions(line.output, {"wrote more than 8 MiB to stdout/stderr"});
+        // Shown cleaned, and the lab itself is graded as the real one.
+        const Graded bytes = attack(p, "notutf8", "", false, 0);
+        REQUIRE(bytes.results.is_object());
+        const std::string summary =
+            fw::test::read_text(fw::test::out_dir() + "/" + p.name + "-notutf8/summary.txt");
+        CHECK(summary.find("\xff") == std::string::npos);
+        CHECK(summary.find("\x1b") == std::string::npos);
+    }
+}
+
+TEST_CASE("sandbox: under --run-as a lab writes nowhere but its work directory") {
+    if (!can_run_as_nobody()) {
+        std::printf("SKIP: --run-as needs root and a user 'nobody'\n");
+        return;
+    }
+    for (const Profile& p : profiles()) {
+        const std::string closed = fw::test::out_dir() + "/closed-" + p.name;
+        fs::remove_all(closed);
+        fs::create_directories(closed);
+        chmod(closed.c_str(), 0755);
+        const std::string targets = closed +
+                                    "/planted.txt:/etc/fake_lab_planted:" + fw::test::out_dir() +
+                                    "/" + p.name + "-outside/x.txt";
+        const Graded g = attack(p, "outside", "FAKE_LAB_OUTSIDE=" + targets, true);
+        CHECK(g.output.find("WRITTEN") == std::string::npos);
+        fw::test::check_mentions(g.output, {"outside: write", "Permission denied"});
+        CHECK(!fs::exists(closed + "/planted.txt"));
+        CHECK(!fs::exists("/etc/fake_lab_planted"));
+    }
+}
+
+TEST_CASE("sandbox: --sandbox strict refuses to grade without namespaces and cgroups") {
+    for (const Profile& p : profiles()) {
+        CAPTURE(p.name);
+        const std::string out = fw::test::out_dir() + "/strict-" + p.name;
+        const Graded g = grade("", "pipeline --sandbox strict", out, p.wrapper);
+        if (p.privileged) {
+            CHECK(g.exit_code == 0);
+            continue;
+        }
+        CHECK(g.exit_code == 2);
+        fw::test::check_mentions(g.output, {"--sandbox strict: not grading", "namespaces", "cgroup",
+                                            "CAP_SYS_ADMIN", "--sandbox auto"});
+        CHECK(!fs::exists(out + "/results.json"));
+    }
 }
