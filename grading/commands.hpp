@@ -31,6 +31,8 @@ struct GradeOptions {
     // --sandbox: auto uses every layer the machine allows; strict refuses to
     // grade when namespaces or cgroups are missing.
     std::string sandbox = "auto";
+    // --memory: the cgroup's memory limit per lab, in MiB (where there is one).
+    int memory_mib = 2048;
 };
 int grade_command(const GradeOptions& options);
 

@@ -245,6 +245,7 @@ int grade_command(const GradeOptions& options) {
     limits.namespaces = namespaces_usable(namespaces_why);
     const std::unique_ptr<CgroupRoot> cgroups = CgroupRoot::open(cgroups_why);
     limits.cgroups = cgroups.get();
+    limits.resident_cap = static_cast<std::uint64_t>(options.memory_mib) * kMiB;
     run.sandbox = sandbox_layers(as, limits, namespaces_why, cgroups_why);
     if (options.sandbox == "strict") {
         std::vector<std::string> missing;

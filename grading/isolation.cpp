@@ -146,8 +146,10 @@ LabCgroup::LabCgroup(const CgroupRoot& root, std::uint64_t memory_cap, int proce
     bool ok = true;
     if (version_ == 2) {
         ok = write_file(dirs_[0] + "/memory.max", memory) &&
-             write_file(dirs_[0] + "/memory.swap.max", "0") &&
              write_file(dirs_[0] + "/pids.max", processes);
+        // No swap either, where the kernel accounts it.
+        if (ok && fs::exists(dirs_[0] + "/memory.swap.max"))
+            ok = write_file(dirs_[0] + "/memory.swap.max", "0");
         procs_ = dirs_[0] + "/cgroup.procs";
     } else {
         ok = write_file(dirs_[0] + "/memory.limit_in_bytes", memory) &&

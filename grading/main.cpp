@@ -44,6 +44,10 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
                      "auto: every sandbox layer the machine allows; strict: refuse to grade "
                      "without namespaces and cgroups (default auto)")
         ->check(CLI::IsMember({"auto", "strict"}));
+    grade
+        ->add_option("--memory", g.memory_mib,
+                     "MiB of memory per lab, where a cgroup enforces it (default 2048)")
+        ->check(CLI::Range(64, 65536));
     return {grade, [&g] { return grading::grade_command(g); }};
 }
 

@@ -111,7 +111,12 @@ std::string results_json(const GradeRun& run, const std::string& out_dir, size_t
     results["gradable"] = true;
     results["score"] = max > 0 ? std::clamp(run.score() / max, 0.0, 1.0) : 0.0;
     results["message"] = capped(overview(run, passed, tests.size()), cap);
-    results["output"] = capped(lab_logs(run), cap);
+    const std::string logs = lab_logs(run);
+    results["output"] =
+        capped((run.sandbox.empty() ? logs
+                                    : "Sandbox: " + report::sandbox_line(run.sandbox) + "\n" +
+                                          (logs.empty() ? "" : "\n" + logs)),
+               cap);
     results["tests"] = tests;
     return results.dump(2) + "\n";
 }

@@ -6,8 +6,10 @@
 //     PR_SET_NO_NEW_PRIVS just before the lab executable runs; course is a
 //     child subreaper, so whatever a lab leaves running comes back to course
 //     and is killed when the lab ends;
-//   - under --run-as USER: RLIMIT_NPROC, and after each lab every process of
-//     USER that no running lab started is killed (a setsid() escape too).
+//   - under --run-as USER: RLIMIT_NPROC, and, where there is no cgroup, after
+//     each lab every process of USER that no running lab started is killed
+//     (a setsid() escape too);
+//   - as root with CAP_SYS_ADMIN: namespaces and a cgroup (isolation.hpp).
 #pragma once
 
 #include <linux/filter.h>
