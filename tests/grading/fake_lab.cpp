@@ -140,7 +140,12 @@ int try_ptrace() {
     errno = 0;
     const long rc = ptrace(PTRACE_ATTACH, course, nullptr, nullptr);
     std::printf("ptrace: attach to course: %s\n", rc == 0 ? "ATTACHED" : std::strerror(errno));
-    if (rc == 0) ptrace(PTRACE_DETACH, course, nullptr, nullptr);
+    if (rc == 0) {
+        // Attached (a sanitized build allows ptrace): wait for course to
+        // stop, then let it go, or it would stay stopped.
+        waitpid(course, nullptr, __WALL);
+        ptrace(PTRACE_DETACH, course, nullptr, nullptr);
+    }
     char buf[64];
     iovec local{buf, sizeof buf};
     iovec remote{reinterpret_cast<void*>(0x400000), sizeof buf};
@@ -319,7 +324,8 @@ int main(int argc, char** argv) {
             }
         }
         std::printf("forkbomb: made %d of %d processes\n", made, wanted);
-        return 3;
+        std::fflush(stdout);
+        _exit(3);  // no exit handlers: a sanitizer's leak check cannot start a thread now
     } else if (mode == "alloc") {
         // 16 GiB: in one piece, then (FAKE_LAB_TOUCH=1) 256 MiB at a time,
         // each written to, so that it is really resident.
@@ -344,9 +350,10 @@ int main(int argc, char** argv) {
         }
         return 3;
     } else if (mode == "fds") {
-        int opened = 0;
-        while (open("/dev/null", O_RDONLY) >= 0) ++opened;
-        std::printf("fds: opened %d, then: %s\n", opened, std::strerror(errno));
+        std::vector<int> opened;
+        for (int fd; (fd = open("/dev/null", O_RDONLY)) >= 0;) opened.push_back(fd);
+        std::printf("fds: opened %zu, then: %s\n", opened.size(), std::strerror(errno));
+        for (const int fd : opened) close(fd);
         return 3;
     } else if (mode == "longline") {
         const std::string line(10 << 20, 'y');  // 10 MiB, no newline
