@@ -205,20 +205,53 @@ void LabCgroup::remove() {
     dirs_.clear();
 }
 
+namespace {
+
+// Where the probe's child says which step failed.
+int g_probe_fd = -1;
+
+void probe_fail(const char* what) {
+    const int e = errno;
+    const ssize_t ignored = write(g_probe_fd, what, std::strlen(what));
+    (void)ignored;
+    _exit(e == 0 ? 1 : e);
+}
+
+}  // namespace
+
 bool namespaces_usable(std::string& why) {
+    // The whole set-up, as a lab child goes through it, in a throwaway child
+    // whose "lab" exits at once.
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) {
+        why = std::string("pipe: ") + std::strerror(errno);
+        return false;
+    }
     const pid_t pid = fork();
     if (pid < 0) {
         why = std::string("fork: ") + std::strerror(errno);
+        close(fds[0]);
+        close(fds[1]);
         return false;
     }
-    if (pid == 0) _exit(unshare(kNamespaces) == 0 ? 0 : errno);
+    if (pid == 0) {
+        close(fds[0]);
+        g_probe_fd = fds[1];
+        enter_namespaces(probe_fail);
+        _exit(0);
+    }
+    close(fds[1]);
+    char what[256] = {};
+    const ssize_t n = read(fds[0], what, sizeof what - 1);
+    close(fds[0]);
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
-    why = "unshare: " +
-          std::string(WIFEXITED(status) ? std::strerror(WEXITSTATUS(status)) : "killed") +
-          " (new namespaces need CAP_SYS_ADMIN)";
+    const std::string step = n > 0 ? std::string(what, static_cast<size_t>(n)) : "the set-up";
+    why = step + ": " +
+          (WIFEXITED(status) ? std::strerror(WEXITSTATUS(status)) : std::string("killed")) +
+          " (new namespaces need root with CAP_SYS_ADMIN)";
     return false;
 }
 
@@ -281,7 +314,10 @@ void enter_namespaces(void (*fail)(const char*)) noexcept {
     if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || prctl(PR_SET_DUMPABLE, 0) != 0 ||
         prctl(PR_SET_NAME, "lab-init") != 0)
         fail("prctl");
-    if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0)
+    // Nothing mounted here reaches course's namespace. In a chroot "/" may
+    // be no mount point: then /proc's mount, the only one changed, is enough.
+    if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 &&
+        mount(nullptr, "/proc", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0)
         fail("making the mounts private");
     if (mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr) != 0)
         fail("mounting the namespace's /proc");
