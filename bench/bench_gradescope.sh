@@ -24,9 +24,12 @@ course="$root_dir/build/bin/course"
 
 work=$(mktemp -d /tmp/bench-gradescope.XXXXXX)
 chmod 755 "$work"
-cgroups=()
+# make_cgroup runs in a command substitution (a subshell): the cgroups are
+# found again by their names, which carry this script's pid.
 cleanup() {
-  for g in "${cgroups[@]}"; do rmdir "$g" 2>/dev/null || true; done
+  for g in /sys/fs/cgroup/bench-gradescope-$$-* /sys/fs/cgroup/*/bench-gradescope-$$-*; do
+    [ -d "$g" ] && rmdir "$g" 2>/dev/null || true
+  done
   rm -rf "$work"
 }
 trap cleanup EXIT
@@ -64,13 +67,11 @@ make_cgroup() {
   local name="bench-gradescope-$$-$1" quota=$2 period=$3 limit=$4
   if [ -w /sys/fs/cgroup/cpu ] && [ -w /sys/fs/cgroup/memory ] &&
      mkdir "/sys/fs/cgroup/cpu/$name" "/sys/fs/cgroup/memory/$name" 2>/dev/null; then
-    cgroups+=("/sys/fs/cgroup/cpu/$name" "/sys/fs/cgroup/memory/$name")
     echo "$period" >"/sys/fs/cgroup/cpu/$name/cpu.cfs_period_us"
     [ "$quota" = max ] || echo "$quota" >"/sys/fs/cgroup/cpu/$name/cpu.cfs_quota_us"
     [ "$limit" = max ] || echo "$limit" >"/sys/fs/cgroup/memory/$name/memory.limit_in_bytes"
     echo "/sys/fs/cgroup/cpu/$name /sys/fs/cgroup/memory/$name"
   elif [ -f /sys/fs/cgroup/cgroup.controllers ] && mkdir "/sys/fs/cgroup/$name" 2>/dev/null; then
-    cgroups+=("/sys/fs/cgroup/$name")
     echo "$quota $period" >"/sys/fs/cgroup/$name/cpu.max"
     echo "$limit" >"/sys/fs/cgroup/$name/memory.max"
     echo "/sys/fs/cgroup/$name"

@@ -77,23 +77,29 @@ std::atomic<unsigned> g_next_lab{0};
 
 }  // namespace
 
-std::unique_ptr<CgroupRoot> CgroupRoot::open(std::string& why) {
+std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
     const std::string name = "course-" + std::to_string(getpid());
     std::unique_ptr<CgroupRoot> root(new CgroupRoot);
     std::error_code ec;
-    // v2, with the memory and pids controllers handed down to course's
-    // directory (the root cgroup may hold processes and controllers alike).
+    // v2, with the memory and pids controllers (and cpu, where there is one)
+    // handed down to course's directory (the root cgroup may hold processes
+    // and controllers alike).
     if (const std::string v2 = cgroup_mount("cgroup2", ""); !v2.empty()) {
         const std::string controllers = read_file(v2 + "/cgroup.controllers");
         if (controllers.find("memory") != std::string::npos &&
             controllers.find("pids") != std::string::npos) {
             const std::string dir = v2 + "/" + name;
-            if (write_file(v2 + "/cgroup.subtree_control", "+memory +pids") &&
-                fs::create_directory(dir, ec) &&
-                write_file(dir + "/cgroup.subtree_control", "+memory +pids")) {
-                root->version_ = 2;
-                root->dirs_ = {dir};
-                return root;
+            for (const bool cpu : {true, false}) {
+                if (cpu && controllers.find("cpu") == std::string::npos) continue;
+                const std::string wanted = cpu ? "+memory +pids +cpu" : "+memory +pids";
+                if (write_file(v2 + "/cgroup.subtree_control", wanted) &&
+                    (fs::is_directory(dir) || fs::create_directory(dir, ec)) &&
+                    write_file(dir + "/cgroup.subtree_control", wanted)) {
+                    root->version_ = 2;
+                    root->cpu_ = cpu;
+                    root->dirs_ = {dir};
+                    return root;
+                }
             }
             fs::remove(dir, ec);
             why = "cannot make a cgroup under " + v2 + " (" +
@@ -111,12 +117,45 @@ std::unique_ptr<CgroupRoot> CgroupRoot::open(std::string& why) {
         const std::string dir = top + "/" + name;
         if (!fs::create_directory(dir, ec)) {
             why = "cannot make " + dir + " (" + ec.message() + ")";
-            for (const std::string& made : root->dirs_) fs::remove(made, ec);
-            return nullptr;
+            return nullptr;  // ~CgroupRoot removes what was made
         }
         root->dirs_.push_back(dir);
     }
+    // The cpu hierarchy where it is separate and writable: an equal share per lab.
+    if (const std::string cpu = cgroup_mount("cgroup", "cpu"); !cpu.empty() && cpu != memory) {
+        const std::string dir = cpu + "/" + name;
+        if (fs::create_directory(dir, ec)) {
+            root->dirs_.push_back(dir);
+            root->cpu_ = true;
+        }
+    }
     root->version_ = 1;
+    return root;
+}
+
+std::unique_ptr<CgroupRoot> CgroupRoot::open(std::string& why) {
+    std::unique_ptr<CgroupRoot> root = make(why);
+    if (!root) return nullptr;
+    // Tried once the way each lab uses it: made, joined by a process, emptied
+    // and removed. Where any step fails the layer is off, not every lab.
+    try {
+        LabCgroup probe(*root, std::uint64_t{64} << 20, 16);
+        const pid_t pid = fork();
+        if (pid < 0) throw fw::Error(std::string("fork: ") + std::strerror(errno));
+        if (pid == 0) {
+            for (const int fd : probe.join_fds())
+                if (write(fd, "0", 1) != 1) _exit(1);
+            _exit(0);
+        }
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+            throw fw::Error("a process cannot join a cgroup made in " + root->dirs_[0]);
+    } catch (const fw::Error& e) {
+        why = e.what();
+        return nullptr;
+    }
     return root;
 }
 
@@ -125,7 +164,8 @@ CgroupRoot::~CgroupRoot() {
 }
 
 std::string CgroupRoot::describe() const {
-    return version_ == 2 ? "cgroup v2" : "cgroup v1 (memory, pids)";
+    return version_ == 2 ? "cgroup v2"
+                         : std::string("cgroup v1 (memory, pids") + (cpu_ ? ", cpu)" : ")");
 }
 
 LabCgroup::LabCgroup(const CgroupRoot& root, std::uint64_t memory_cap, int processes_cap)

@@ -7,8 +7,10 @@
 //     or of another lab, and when the lab ends the init ends, which kills
 //     everything left in the namespace;
 //   - a cgroup per child (v2, or v1's memory and pids controllers) with a
-//     memory limit and a process limit; when the lab ends every process in
-//     it is killed, and an out-of-memory kill is reported as such.
+//     memory limit and a process limit, and with the cpu controller where
+//     there is one, so that labs graded at once share the CPU equally; when
+//     the lab ends every process in it is killed, and an out-of-memory kill
+//     is reported as such.
 #pragma once
 
 #include <sys/types.h>
@@ -31,14 +33,20 @@ public:
     CgroupRoot& operator=(const CgroupRoot&) = delete;
 
     int version() const { return version_; }
-    // "cgroup v1 (memory, pids)" or "cgroup v2".
+    // Whether each lab's cgroup also has the cpu controller: sibling cgroups
+    // share the CPU equally, however many threads each runs.
+    bool cpu() const { return cpu_; }
+    // "cgroup v1 (memory, pids, cpu)" or "cgroup v2".
     std::string describe() const;
 
 private:
     friend class LabCgroup;
     CgroupRoot() = default;
+    static std::unique_ptr<CgroupRoot> make(std::string& why);
     int version_ = 2;
-    // v2: one directory; v1: the memory and the pids hierarchy's.
+    bool cpu_ = false;
+    // v2: one directory; v1: the memory, the pids and (cpu_) the cpu
+    // hierarchy's.
     std::vector<std::string> dirs_;
 };
 

@@ -242,10 +242,13 @@ std::vector<SandboxLayer> sandbox_layers(const RunAsUser* user, const ChildLimit
     else
         layers.push_back({"namespaces", false, namespaces_why});
     if (limits.cgroups)
-        layers.push_back({limits.cgroups->describe(), true,
-                          "memory " + mib_text(limits.resident_cap) + ", " +
-                              std::to_string(limits.processes_cap) +
-                              " processes; everything in it is killed when the lab ends"});
+        layers.push_back(
+            {limits.cgroups->describe(), true,
+             "memory " + mib_text(limits.resident_cap) + ", " +
+                 std::to_string(limits.processes_cap) + " processes" +
+                 (limits.cgroups->cpu() ? ", an equal share of the CPU against the other labs"
+                                        : "") +
+                 "; everything in it is killed when the lab ends"});
     else
         layers.push_back({"cgroup", false, cgroups_why});
     return layers;

@@ -156,6 +156,12 @@ int try_ptrace() {
     std::string text;
     std::getline(in, text, '\0');
     std::printf("ptrace: read %s: %s\n", environ_path.c_str(), in ? "READ" : std::strerror(errno));
+    // The command line: every user may read it unless /proc hides processes.
+    std::ifstream cmdline("/proc/" + std::to_string(course) + "/cmdline");
+    std::string args;
+    std::getline(cmdline, args, '\0');
+    std::printf("ptrace: read /proc/%d/cmdline: %s\n", static_cast<int>(course),
+                cmdline ? ("READ " + args).c_str() : std::strerror(errno));
     return 3;
 }
 
@@ -374,6 +380,13 @@ int main(int argc, char** argv) {
                         f ? "WRITTEN" : std::strerror(errno));
         }
         return 3;
+    } else if (mode == "cgroups") {
+        // Where it runs, for the test (a passing lab's output is not shown).
+        std::ifstream groups("/proc/self/cgroup");
+        std::string text;
+        for (std::string line; std::getline(groups, line);) text += "cgroups: " + line + "\n";
+        write_text(env("FAKE_LAB_REPORT"), text);
+        return run_real(argv);
     } else if (mode == "snoop") {
         snoop(env("FAKE_LAB_SNOOP_READ"), env("FAKE_LAB_SNOOP_WRITE"));
         return 3;

@@ -331,6 +331,36 @@ TEST_CASE("sandbox: under --run-as a lab writes nowhere but its work directory")
     }
 }
 
+TEST_CASE("sandbox: each lab in a cgroup of its own, with memory, pids and the CPU") {
+    for (const Profile& p : profiles()) {
+        if (!p.privileged) continue;
+        const std::string report = fw::test::out_dir() + "/cgroups.txt";
+        fs::remove(report);
+        const Graded g = attack(p, "cgroups", "FAKE_LAB_REPORT=" + report, false, 0);
+        const std::string where = fw::test::read_text(report);
+        INFO(where);
+        // Both labs in their own cgroups under this run's course-PID.
+        std::vector<std::string> controllers = {"memory", "pids"};
+        if (g.output.find(", cpu)") != std::string::npos ||
+            g.output.find("an equal share of the CPU") != std::string::npos)
+            controllers.push_back("cpu");
+        for (const std::string& c : controllers) {
+            CAPTURE(c);
+            bool found = false;
+            std::istringstream lines(where);
+            for (std::string line; std::getline(lines, line);)
+                if (line.find("cgroups: ") != std::string::npos &&
+                    (line.find(":" + c + ":") != std::string::npos ||
+                     line.find("," + c + ":") != std::string::npos ||
+                     line.find(":" + c + ",") != std::string::npos ||
+                     line.find("0::/") != std::string::npos))
+                    found = found || (line.find("/course-") != std::string::npos &&
+                                      line.find("/lab-") != std::string::npos);
+            CHECK(found);
+        }
+    }
+}
+
 TEST_CASE("sandbox: --sandbox strict refuses to grade without namespaces and cgroups") {
     for (const Profile& p : profiles()) {
         CAPTURE(p.name);
