@@ -77,6 +77,26 @@ std::atomic<unsigned> g_next_lab{0};
 
 }  // namespace
 
+namespace {
+
+// Removes what a killed course left in `top`: the (empty) cgroups of a
+// course-PID whose process is gone. A cgroup that still holds a process
+// cannot be removed, so nothing running is touched.
+void remove_stale(const std::string& top) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(top, ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("course-", 0) != 0 || !e.is_directory(ec)) continue;
+        const long pid = std::strtol(name.c_str() + 7, nullptr, 10);
+        if (pid <= 0 || kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        for (const auto& lab : fs::directory_iterator(e.path(), ec))
+            if (lab.is_directory(ec)) rmdir(lab.path().c_str());
+        rmdir(e.path().c_str());
+    }
+}
+
+}  // namespace
+
 std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
     const std::string name = "course-" + std::to_string(getpid());
     std::unique_ptr<CgroupRoot> root(new CgroupRoot);
@@ -88,6 +108,7 @@ std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
         const std::string controllers = read_file(v2 + "/cgroup.controllers");
         if (controllers.find("memory") != std::string::npos &&
             controllers.find("pids") != std::string::npos) {
+            remove_stale(v2);
             const std::string dir = v2 + "/" + name;
             for (const bool cpu : {true, false}) {
                 if (cpu && controllers.find("cpu") == std::string::npos) continue;
@@ -114,6 +135,7 @@ std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
         return nullptr;
     }
     for (const std::string& top : {memory, pids}) {
+        remove_stale(top);
         const std::string dir = top + "/" + name;
         if (!fs::create_directory(dir, ec)) {
             why = "cannot make " + dir + " (" + ec.message() + ")";
@@ -123,6 +145,7 @@ std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
     }
     // The cpu hierarchy where it is separate and writable: an equal share per lab.
     if (const std::string cpu = cgroup_mount("cgroup", "cpu"); !cpu.empty() && cpu != memory) {
+        remove_stale(cpu);
         const std::string dir = cpu + "/" + name;
         if (fs::create_directory(dir, ec)) {
             root->dirs_.push_back(dir);

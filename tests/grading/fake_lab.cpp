@@ -23,9 +23,9 @@
 //   ptrace      tries ptrace and process_vm_readv on course (its parent)
 //               and reading course's /proc environ, prints what happened,
 //               exits 3
-//   daemon      leaves a setsid() daemon (named lab-daemon) that waits 3 s
-//               and then writes into FAKE_LAB_SNOOP_WRITE, then becomes the
-//               real lab
+//   daemon      leaves a setsid() daemon (named lab-daemon) that waits until
+//               the lab has ended, then 1 s, then writes into
+//               FAKE_LAB_SNOOP_WRITE; the lab becomes the real lab
 //   forkbomb    forks up to FAKE_LAB_FORKS children that wait, prints how
 //               many it made, exits 3
 // FAKE_LAB_MARK: a file the fake creates whenever it runs.
@@ -168,6 +168,7 @@ int try_ptrace() {
 // A daemon that outlives its lab unless course kills it: it leaves the
 // lab's process group and session, and its parent exits at once.
 void leave_daemon(const std::string& write_dir) {
+    const pid_t lab = getpid();
     const pid_t first = fork();
     if (first != 0) {
         waitpid(first, nullptr, 0);
@@ -176,7 +177,10 @@ void leave_daemon(const std::string& write_dir) {
     setsid();
     if (fork() != 0) _exit(0);
     prctl(PR_SET_NAME, "lab-daemon");
-    sleep(3);
+    // Until its lab has ended and been graded (a minute at most), then a
+    // moment more: what it does while its lab still runs is the lab's own.
+    for (int i = 0; i < 1200 && kill(lab, 0) == 0; ++i) usleep(50 * 1000);
+    sleep(1);
     write_text(write_dir + "/daemon-was-here.txt", "the lab's daemon outlived it\n");
     _exit(0);
 }
