@@ -311,6 +311,13 @@ TEST_CASE("sandbox: descriptors, a 10 MiB line and bytes that are not UTF-8") {
     }
 }
 
+TEST_CASE("sandbox: filling the work directory stops at its cap") {
+    for (const Profile& p : profiles()) {
+        const Graded fill = attack(p, "fill", "", false);
+        fw::test::check_mentions(fill.output, {"256 MiB into its work directory"});
+    }
+}
+
 TEST_CASE("sandbox: under --run-as a lab writes nowhere but its work directory") {
     if (!can_run_as_nobody()) {
         std::printf("SKIP: --run-as needs root and a user 'nobody'\n");
