@@ -66,11 +66,15 @@ std::string env(const char* name) {
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
-// Runs the real lab with our arguments and waits for it: FAKE_LAB_REAL_COPY
-// when set (a copy another user may run), else the build's.
+// The real lab: FAKE_LAB_REAL_COPY when set (a copy another user may run),
+// else the build's.
+std::string real_lab() {
+    return env("FAKE_LAB_REAL_COPY").empty() ? FAKE_LAB_REAL : env("FAKE_LAB_REAL_COPY");
+}
+
+// Runs the real lab with our arguments and waits for it.
 int run_real(char** argv) {
-    const std::string real =
-        env("FAKE_LAB_REAL_COPY").empty() ? FAKE_LAB_REAL : env("FAKE_LAB_REAL_COPY");
+    const std::string real = real_lab();
     pid_t pid = fork();
     if (pid == 0) {
         execv(real.c_str(), argv);
@@ -222,8 +226,9 @@ int main(int argc, char** argv) {
     const json job = json::parse(in, nullptr, false);
     const std::string mode = env("FAKE_LAB_MODE");
     if (!job.is_object() || mode.empty() || job.value("lab", "") != env("FAKE_LAB_TARGET")) {
-        execv(FAKE_LAB_REAL, argv);
-        std::perror("fake_lab: exec " FAKE_LAB_REAL);
+        const std::string real = real_lab();
+        execv(real.c_str(), argv);
+        std::perror(("fake_lab: exec " + real).c_str());
         return 127;
     }
     const json renders = job.value("renders", json::array());

@@ -183,8 +183,9 @@ Graded attack(const Profile& p, const std::string& mode, const std::string& env,
         fs::copy_file(transforms / "checkpoints.json",
                       tree + "/labs/01_transforms/checkpoints.json");
         fs::copy(transforms / "reference", tree + "/labs/01_transforms/reference");
-        g = grade(st.env + " LAB_ROOT=" + tree + " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=" + mode +
-                      " " + env,
+        // The staged copies: the build may sit where `nobody` cannot enter.
+        g = grade(st.env + " FAKE_LAB_REAL_COPY=" + st.lab + " LAB_ROOT=" + tree +
+                      " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=" + mode + " " + env,
                   "pipeline transforms --run-as nobody --lab " + st.fake + options,
                   fw::test::out_dir() + "/" + p.name + "-" + mode, p.wrapper);
         fs::remove_all(st.dir);
