@@ -89,7 +89,7 @@ namespace {
 [[noreturn]] void end_like(int status) {
     if (WIFSIGNALED(status)) {
         const int sig = WTERMSIG(status);
-        struct sigaction dfl {};
+        struct sigaction dfl = {};
         dfl.sa_handler = SIG_DFL;
         sigaction(sig, &dfl, nullptr);
         sigset_t one;
