@@ -137,13 +137,25 @@ std::vector<Thumbnails::Picture> Thumbnails::for_checkpoint(const CheckpointResu
     const Source sources[] = {{"rendered", cp.rendered, false},
                               {"expected", cp.expected, false},
                               {"difference", cp.image_failed ? cp.difference : "", true}};
+    // A checkpoint shows all of its pictures or none: they are admitted only
+    // when all of them fit in what is left of the budget, and once one
+    // checkpoint's do not, later ones get none either (the report keeps its
+    // order: the first failures are the ones a student reads first).
     std::vector<Picture> pictures;
+    size_t bytes = 0;
     for (const Source& source : sources) {
         std::string u = uri(source.relative, source.difference);
         if (u.empty()) continue;
-        used_ += u.size();
+        bytes += u.size();
         pictures.push_back({source.label, std::move(u)});
     }
+    if (bytes > budget_ - used_) {
+        used_ = budget_;
+        ++skipped_;
+        if (left_out) *left_out = true;
+        return {};
+    }
+    used_ += bytes;
     return pictures;
 }
 
@@ -151,13 +163,15 @@ std::string within_limit(size_t limit, const std::function<std::string(size_t)>&
     std::string text = write(0);
     if (text.size() >= limit) return text;
     size_t budget = limit - text.size();
-    // Thumbnails stop handing out pictures once the budget is spent, so the
-    // last checkpoint's may go over it: retry with that much less.
-    for (int attempt = 0; attempt < 4 && budget > 0; ++attempt) {
+    // Pictures never take more than the budget, but each checkpoint's table
+    // around them is a little longer than the line saying they were left out:
+    // retry with the overshoot taken off, then with half the budget, and at
+    // worst keep the text alone.
+    for (int attempt = 0; attempt < 8 && budget > 0; ++attempt) {
         std::string with = write(budget);
         if (with.size() <= limit) return with;
         const size_t over = with.size() - limit;
-        budget = budget > over ? budget - over : 0;
+        budget = attempt < 3 && budget > over ? budget - over : budget / 2;
     }
     return text;
 }

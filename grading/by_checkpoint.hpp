@@ -49,7 +49,8 @@ std::string checkpoint_failure(const LabResult& lab, const CheckpointResult& cp)
 
 // Small pictures (PNG or JPEG, whichever is smaller) for reports that must stay small
 // (results.json: under 1 MB for the whole course), as data: URIs, at most `max_side` pixels on a
-// side; once `budget` bytes of URIs are handed out, no more are made.
+// side; never more than `budget` bytes of URIs in all: a checkpoint gets all of its pictures or
+// none, and once one checkpoint's do not fit, later checkpoints get none either.
 class Thumbnails {
 public:
     Thumbnails(std::string out_dir, size_t budget, int max_side = 160);
@@ -59,7 +60,8 @@ public:
     };
     // The pictures a failed checkpoint shows: its frame, the reference and,
     // when its image check failed, the difference. Empty when the checkpoint
-    // passed, has no pictures, or the budget is spent (`left_out` is then set).
+    // passed, has no pictures, or they do not fit in what is left of the
+    // budget (`left_out` is then set).
     std::vector<Picture> for_checkpoint(const CheckpointResult& cp, bool* left_out = nullptr);
     // How many checkpoints got no pictures because the budget was spent.
     size_t skipped() const { return skipped_; }
@@ -79,7 +81,7 @@ constexpr size_t kResultsLimit = 900 * 1024;
 // What `write(budget)` returns with the largest budget for pictures (bytes of
 // data: URIs) that keeps it within `limit` bytes: the text comes first,
 // whatever it takes (write(0)), the pictures get what is left of `limit`, and
-// less when the last checkpoint's pictures overshoot.
+// less when the tables around them overshoot.
 std::string within_limit(size_t limit, const std::function<std::string(size_t budget)>& write);
 
 // The lab's number from its folder-free id ("03_shading" -> "3"), else

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,43 @@ inline grading::LabResult crashed_transforms() {
     transforms.checks.push_back(
         check("01_transforms", "rotate", "stat", "primitives_generated == 2", 0, 2, false, ""));
     return transforms;
+}
+
+// `labs` labs of `checkpoints` failed checkpoints each (an image check with three
+// 512 x 512 pictures of noise, which no encoder shrinks much, and a probe
+// printing `output`), the pictures written once under dir/noise/.
+inline grading::GradeRun large_run(const std::string& dir, int labs, int checkpoints,
+                                   const std::string& output) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir + "/noise");
+    std::mt19937 random(7);
+    for (const char* name : {"frame", "expected", "diff"}) {
+        fw::Image img(512, 512, {0, 0, 0, 255});
+        for (int y = 0; y < 512; ++y)
+            for (int x = 0; x < 512; ++x)
+                img.at(x, y) = {static_cast<std::uint8_t>(random()),
+                                static_cast<std::uint8_t>(random()),
+                                static_cast<std::uint8_t>(random()), 255};
+        fw::write_png(dir + "/noise/" + name + ".png", img);
+    }
+    grading::GradeRun run;
+    for (int l = 0; l < labs; ++l) {
+        grading::LabResult lab;
+        lab.lab = "0" + std::to_string(l) + "_lab";
+        for (int c = 0; c < checkpoints; ++c) {
+            const std::string cp = "checkpoint_" + std::to_string(c);
+            grading::CheckResult image =
+                check(lab.lab, cp, "image", "image vs reference", 0, 2, false,
+                      "Observed: 262144 of 262144 pixels (100%) differ by more than 8/255");
+            image.rendered = "noise/frame.png", image.expected = "noise/expected.png";
+            image.difference = "noise/diff.png";
+            lab.checks.push_back(image);
+            lab.checks.push_back(
+                check(lab.lab, cp, "probe", "probe (256, 256) colour", 0, 1, false, output));
+        }
+        run.labs.push_back(lab);
+    }
+    return run;
 }
 
 // The independent base64 decoder (tests/support/browser.hpp) reads the

@@ -6,7 +6,6 @@
 // 1 MB. Expected numbers come from the fixture's own constants.
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -31,6 +30,7 @@ using report_fixture::base64_decode;
 using report_fixture::check;
 using report_fixture::crashed_transforms;
 using report_fixture::kCrash;
+using report_fixture::large_run;
 using report_fixture::write_triangle_pngs;
 
 const grading::ResultsFile kPrairieLearn{grading::ResultsFormat::PrairieLearn, ""};
@@ -89,39 +89,6 @@ const json& test_named(const json& results, const std::string& name) {
 // A run of `labs` labs of `checkpoints` failed checkpoints each, every one
 // with an image check on the same three 512 x 512 pictures of noise (which
 // compress badly), and the given output on its probe.
-GradeRun large_run(const std::string& dir, int labs, int checkpoints, const std::string& output) {
-    fs::remove_all(dir);
-    fs::create_directories(dir + "/noise");
-    std::mt19937 random(7);
-    for (const char* name : {"frame", "expected", "diff"}) {
-        fw::Image img(512, 512, {0, 0, 0, 255});
-        for (int y = 0; y < 512; ++y)
-            for (int x = 0; x < 512; ++x)
-                img.at(x, y) = {static_cast<std::uint8_t>(random()),
-                                static_cast<std::uint8_t>(random()),
-                                static_cast<std::uint8_t>(random()), 255};
-        fw::write_png(dir + "/noise/" + name + ".png", img);
-    }
-    GradeRun run;
-    for (int l = 0; l < labs; ++l) {
-        LabResult lab;
-        lab.lab = "0" + std::to_string(l) + "_lab";
-        for (int c = 0; c < checkpoints; ++c) {
-            const std::string cp = "checkpoint_" + std::to_string(c);
-            CheckResult image =
-                check(lab.lab, cp, "image", "image vs reference", 0, 2, false,
-                      "Observed: 262144 of 262144 pixels (100%) differ by more than 8/255");
-            image.rendered = "noise/frame.png", image.expected = "noise/expected.png";
-            image.difference = "noise/diff.png";
-            lab.checks.push_back(image);
-            lab.checks.push_back(
-                check(lab.lab, cp, "probe", "probe (256, 256) colour", 0, 1, false, output));
-        }
-        run.labs.push_back(lab);
-    }
-    return run;
-}
-
 }  // namespace
 
 TEST_CASE("prairielearn results.json: the documented fields, one test per checkpoint") {

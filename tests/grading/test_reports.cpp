@@ -29,6 +29,7 @@ using report_fixture::base64_decode;
 using report_fixture::check;
 using report_fixture::crashed_transforms;
 using report_fixture::kCrash;
+using report_fixture::large_run;
 using report_fixture::write_triangle_pngs;
 
 // Output of the failing probe: markup, quotes, a terminal escape, a control
@@ -202,6 +203,40 @@ TEST_CASE("results.json's pictures: shrunk to 160 pixels, the difference kept br
     CHECK(small.at(93, 31) == fw::Rgba8{255, 20, 20, 255});
     CHECK(small.at(10, 10) == fw::Rgba8{20, 20, 20, 255});
     CHECK(fw::decode_png(pictures[0], "rendered").width == 160);
+}
+
+TEST_CASE("results.json's pictures fill the room under 1 MB, checkpoint by checkpoint") {
+    // Failed runs of every size: a checkpoint's pictures (about 180 KB of
+    // noise) go in whole or not at all, in order, and the pictures that fit
+    // are there, however the text and the pictures fall against the limit.
+    const std::string dir = fw::test::out_dir() + "/large";
+    for (int checkpoints : {3, 10, 20, 40}) {
+        const GradeRun run = large_run(dir, 7, checkpoints, "Observed: (0, 0, 0)");
+        const size_t failed = run.labs.size() * static_cast<size_t>(checkpoints);
+        grading::write_reports(run, dir);
+        const std::string text = read_text(dir + "/results.json");
+        const auto j = nlohmann::json::parse(text);
+        INFO(failed << " failed checkpoints: results.json is " << text.size() << " bytes");
+        CHECK(text.size() <= grading::kResultsLimit);
+        REQUIRE(j["tests"].size() == failed);
+        size_t pictured = 0, room = 0;
+        for (const auto& t : j["tests"]) {
+            const std::string output = t["output"];
+            const size_t n = count(output, "<img src=\"data:image/");
+            if (n == 0) break;
+            CHECK(n == 3);
+            room = std::max(room, output.size());
+            ++pictured;
+        }
+        MESSAGE(failed << " failed checkpoints: " << pictured << " with pictures, " << text.size()
+                       << " bytes");
+        CHECK(pictured >= 1);
+        // Every later checkpoint says why it has none, and one more
+        // checkpoint's pictures would not have fitted twice over.
+        for (size_t i = pictured; i < j["tests"].size(); ++i)
+            CHECK(count(j["tests"][i]["output"], "No pictures here") == 1);
+        if (pictured < j["tests"].size()) CHECK(text.size() + 2 * room > grading::kResultsLimit);
+    }
 }
 
 TEST_CASE("junit.xml has a test case per checkpoint and escapes what the checks printed") {
