@@ -88,8 +88,11 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
 std::string shader_error_status(const ChildOutputs& outputs);
 
 // Every check of every checkpoint, from the child's raw outputs. Images for
-// the report go to out_dir/<lab>/<checkpoint>[.expected|.diff].png.
+// the report go to out_dir/<lab>/<checkpoint>[.expected|.diff].png. The
+// checkpoints are judged on up to `threads` threads; the results come in the
+// checkpoints' order whatever the number.
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
-                                   const ChildOutputs& outputs, const std::string& out_dir);
+                                   const ChildOutputs& outputs, const std::string& out_dir,
+                                   int threads = 1);
 
 }  // namespace grading

@@ -3,26 +3,23 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <exception>
 #include <filesystem>
-#include <functional>
 #include <mutex>
 #include <optional>
 #include <random>
 #include <set>
-#include <thread>
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/checks.hpp"
 #include "grading/commands.hpp"
 #include "grading/isolation.hpp"
+#include "grading/parallel.hpp"
 #include "grading/reports.hpp"
 #include "grading/sandbox.hpp"
 
@@ -168,29 +165,6 @@ void print_progress(const LabResult& result) {
     std::fflush(stdout);
 }
 
-// Calls `fn(i)` for every i below `count` on up to `jobs` threads, each
-// taking the next i in order; rethrows the first exception once all are done.
-void parallel_for(size_t count, int jobs, const std::function<void(size_t)>& fn) {
-    std::atomic<size_t> next{0};
-    std::mutex failure_mutex;
-    std::exception_ptr failure;
-    auto worker = [&] {
-        for (size_t i; (i = next++) < count;) {
-            try {
-                fn(i);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(failure_mutex);
-                if (!failure) failure = std::current_exception();
-            }
-        }
-    };
-    std::vector<std::thread> workers;
-    const size_t n = std::min<size_t>(static_cast<size_t>(std::max(1, jobs)), count);
-    for (size_t i = 0; i < n; ++i) workers.emplace_back(worker);
-    for (std::thread& t : workers) t.join();
-    if (failure) std::rethrow_exception(failure);
-}
-
 std::string backend_name(const GradeOptions& options) {
     const char* env_backend = std::getenv("LAB_BACKEND");
     return !options.backend.empty()      ? options.backend
@@ -271,7 +245,8 @@ int grade_command(const GradeOptions& options) {
         result.status = child.run.status;
         result.log = child.run.log;
         result.seconds = child.run.seconds;
-        result.checks = judge_lab(labs[i], plans[i], *child.outputs, options.out);
+        result.checks = judge_lab(labs[i], plans[i], *child.outputs, options.out,
+                                  judging_threads(options.jobs));
         if (child.run.ok()) {
             const std::string shader_error = shader_error_status(*child.outputs);
             if (!shader_error.empty()) result.status = shader_error;

@@ -8,12 +8,14 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/checks.hpp"
 #include "grading/image_words.hpp"
 #include "grading/judge_unit.hpp"
+#include "grading/parallel.hpp"
 #include "grading/report_text.hpp"
 
 namespace grading {
@@ -285,7 +287,8 @@ std::string shader_error_status(const ChildOutputs& outputs) {
 }
 
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
-                                   const ChildOutputs& outputs, const std::string& out_dir) {
+                                   const ChildOutputs& outputs, const std::string& out_dir,
+                                   int threads) {
     std::map<std::string, const RenderPlan*> renders;
     for (const RenderPlan& r : plan.renders) renders[r.checkpoint] = &r;
     std::string units_why;
@@ -297,8 +300,12 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
             if (!units.is_object()) units_why = "units.json is not a JSON object";
         }
     }
-    std::vector<CheckResult> results;
-    for (const fw::Checkpoint& cp : lab.file.checkpoints) {
+    // Each checkpoint's frame is decoded, compared and encoded for the
+    // report on its own: the checkpoints go to `threads` threads.
+    const std::vector<fw::Checkpoint>& checkpoints = lab.file.checkpoints;
+    std::vector<std::vector<CheckResult>> by_checkpoint(checkpoints.size());
+    parallel_for(checkpoints.size(), threads, [&](size_t k) {
+        const fw::Checkpoint& cp = checkpoints[k];
         std::optional<Frame> frame;
         auto r = renders.find(cp.name);
         if (r != renders.end()) frame.emplace(outputs, *r->second, out_dir, lab.id);
@@ -318,9 +325,12 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                     if (u.checkpoint == cp.name && u.check == i)
                         judge_unit(lab, check, u, plan.seed, units.is_object() ? &units : nullptr,
                                    units_why, result);
-            results.push_back(std::move(result));
+            by_checkpoint[k].push_back(std::move(result));
         }
-    }
+    });
+    std::vector<CheckResult> results;
+    for (std::vector<CheckResult>& checks : by_checkpoint)
+        for (CheckResult& c : checks) results.push_back(std::move(c));
     return results;
 }
 
