@@ -63,6 +63,8 @@ bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::strin
         return false;
     }
     bytes.clear();
+    // The size lstat saw (within the limit), and one byte to see it grow.
+    bytes.reserve(static_cast<size_t>(st.st_size) + 1);
     char buf[65536];
     ssize_t n;
     while ((n = ::read(fd, buf, sizeof buf)) > 0 && bytes.size() <= limit)
