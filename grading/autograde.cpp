@@ -8,7 +8,6 @@
 // for PrairieLearn it is not gradable, with the reason.
 #include <fcntl.h>
 #include <pwd.h>
-#include <sched.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -25,6 +24,7 @@
 #include "framework/error.hpp"
 #include "grading/child.hpp"
 #include "grading/gradescope.hpp"
+#include "grading/parallel.hpp"
 #include "grading/prairielearn.hpp"
 #include "grading/report_text.hpp"
 #include "grading/submitted_files.hpp"
@@ -152,14 +152,6 @@ int run_logged(const std::vector<std::string>& argv, const fs::path& log, bool e
     return shell_status(status);
 }
 
-// The CPUs this process may use, as nproc counts them.
-unsigned usable_cpus() {
-    cpu_set_t set;
-    if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0)
-        return static_cast<unsigned>(CPU_COUNT(&set));
-    return 1;
-}
-
 class Autograder {
 public:
     Autograder(const AutogradeOptions& options, const Layout& layout)
@@ -279,7 +271,7 @@ private:
             // A compiler cache, where the image has one, is root's: the user compiles plainly.
             command = {"runuser", "-u", options_.user, "--", "env", "CCACHE_DISABLE=1"};
         command.insert(command.end(), {"cmake", "--build", (source_ / "build").string(), "--target",
-                                       "lab", "-j", std::to_string(usable_cpus())});
+                                       "lab", "-j", std::to_string(affinity_cpus())});
         const std::string as = as_user_ ? " as " + options_.user : "";
         std::printf("%sbuilding lab%s\n", layout_.prefix.c_str(), as.c_str());
         std::error_code ec;

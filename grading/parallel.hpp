@@ -38,11 +38,17 @@ inline void parallel_for(size_t count, int threads, const std::function<void(siz
     if (failure) std::rethrow_exception(failure);
 }
 
+// The CPUs this process may run on (its affinity mask, as nproc counts
+// them), at least one.
+unsigned affinity_cpus();
+
+// The cores this process can keep busy: its CPUs, and fewer where its cgroup
+// has a CPU quota (Gradescope's half a core, a container's --cpus), rounded
+// up; at least one.
+unsigned usable_cores();
+
 // The threads that judging one lab may use when `jobs` labs are graded at
-// once: this machine's share per lab, at least one.
-inline int judging_threads(int jobs) {
-    const unsigned cores = std::thread::hardware_concurrency();
-    return std::max(1, static_cast<int>(cores) / std::max(1, jobs));
-}
+// once: the usable cores' share per lab, at least one, at most 8.
+int judging_threads(int jobs);
 
 }  // namespace grading
