@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace grading {
@@ -51,20 +52,24 @@ fw::Rgba8 from_key(std::uint32_t k) {
     return {std::uint8_t(k >> 16), std::uint8_t(k >> 8), std::uint8_t(k), 255};
 }
 
-// The colour seen most often (ties: the smaller key, so the text is stable).
-fw::Rgba8 most_common(const std::unordered_map<std::uint32_t, long>& counts) {
-    std::uint32_t best = 0;
+// The pair of colours (expected, found) seen most often at the same pixel
+// (ties: the smaller key, so the text is stable). A pair, not each side's
+// most common colour on its own: where two shades trade places (lines
+// shifted by a pixel), each side's favourite can be the same colour.
+std::pair<fw::Rgba8, fw::Rgba8> most_common(const std::unordered_map<std::uint64_t, long>& pairs) {
+    std::uint64_t best = 0;
     long best_n = -1;
-    for (const auto& [key, n] : counts)
+    for (const auto& [key, n] : pairs)
         if (n > best_n || (n == best_n && key < best)) best = key, best_n = n;
-    return from_key(best);
+    return {from_key(static_cast<std::uint32_t>(best >> 24)),
+            from_key(static_cast<std::uint32_t>(best & 0xFFFFFF))};
 }
 
 struct Group {
     std::string expected_name, found_name;
     long pixels = 0;
     Box box;
-    std::unordered_map<std::uint32_t, long> expected, found;
+    std::unordered_map<std::uint64_t, long> pairs;  // (expected << 24 | found) -> pixels
 };
 
 }  // namespace
@@ -130,8 +135,7 @@ std::string describe_difference(const fw::Image& actual, const fw::Image& expect
             Group& g = by_names[{colour_name(want), colour_name(got)}];
             ++g.pixels;
             g.box.add(x, y);
-            ++g.expected[rgb_key(want)];
-            ++g.found[rgb_key(got)];
+            ++g.pairs[(std::uint64_t(rgb_key(want)) << 24) | rgb_key(got)];
         }
     std::vector<const Group*> sorted;
     for (auto& [names, g] : by_names) {
@@ -152,9 +156,10 @@ std::string describe_difference(const fw::Image& actual, const fw::Image& expect
         }
         // A colour name that is the same on both sides means a shade differs:
         // the exact colours say which.
+        const auto [want, got] = most_common(g.pairs);
         text += "\n  " + count_text(g.pixels) + (g.pixels == 1 ? " pixel" : " pixels") +
-                ": expected " + colour_words(most_common(g.expected)) + ", found " +
-                colour_words(most_common(g.found)) + ", in " + g.box.text();
+                ": expected " + colour_words(want) + ", found " + colour_words(got) + ", in " +
+                g.box.text();
     }
     if (rest > 0)
         text += "\n  " + count_text(rest) + (rest == 1 ? " pixel" : " pixels") +

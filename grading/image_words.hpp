@@ -21,7 +21,8 @@ std::string colour_words(const fw::Rgba8& colour);
 // The failed pixels of `result` (compare_images(actual, expected)) in words:
 // their bounding box, then up to `groups` kinds of difference (each pair of
 // colour names expected and found), most pixels first, with their count,
-// the most common colours of each and their own bounding box. Coordinates
+// the pair of colours (expected, found) most common at its pixels and its
+// own bounding box. Coordinates
 // are pixels from the bottom-left corner, as a probe's "at". Empty when no
 // pixel failed or the sizes differ.
 std::string describe_difference(const fw::Image& actual, const fw::Image& expected,

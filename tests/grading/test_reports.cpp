@@ -15,6 +15,7 @@
 
 #include "framework/image.hpp"
 #include "grading/by_checkpoint.hpp"
+#include "grading/image_words.hpp"
 #include "grading/report_text.hpp"
 #include "grading/reports.hpp"
 #include "tests/grading/report_fixture.hpp"
@@ -237,6 +238,35 @@ TEST_CASE("results.json's pictures fill the room under 1 MB, checkpoint by check
             CHECK(count(j["tests"][i]["output"], "No pictures here") == 1);
         if (pictured < j["tests"].size()) CHECK(text.size() + 2 * room > grading::kResultsLimit);
     }
+}
+
+TEST_CASE("a failed image check's words never say the same colour was expected and found") {
+    // Two greens trade places, as when a mistake shifts thin lines: the left
+    // half should be the light one and the right half the dark one, and the
+    // frame has them the other way round. Each side's most common colour
+    // alone is the same green (as many pixels of each); the pairs at the same
+    // pixels are not.
+    const fw::Rgba8 light{40, 200, 60, 255}, dark{20, 150, 40, 255};
+    fw::Image expected(8, 4, light), actual(8, 4, dark);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 4; x < 8; ++x) expected.at(x, y) = dark, actual.at(x, y) = light;
+    fw::CompareOptions exact;
+    exact.radius = 0;
+    const fw::CompareResult c = fw::compare_images(actual, expected, exact);
+    REQUIRE(c.failed_pixels == 32);
+    const std::string words = grading::describe_difference(actual, expected, c);
+    INFO(words);
+    CHECK(grading::colour_name(light) == grading::colour_name(dark));  // one group
+    const std::string light_words = grading::colour_words(light),
+                      dark_words = grading::colour_words(dark);
+    CHECK(light_words != dark_words);
+    const bool light_first = words.find("expected " + light_words + ", found " + dark_words) !=
+                             std::string::npos,
+               dark_first = words.find("expected " + dark_words + ", found " + light_words) !=
+                            std::string::npos;
+    CHECK((light_first || dark_first));
+    for (const std::string& w : {light_words, dark_words})
+        CHECK(words.find("expected " + w + ", found " + w) == std::string::npos);
 }
 
 TEST_CASE("junit.xml has a test case per checkpoint and escapes what the checks printed") {
