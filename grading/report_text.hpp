@@ -43,4 +43,12 @@ std::string sandbox_html(const std::vector<SandboxLayer>& layers);
 // index.html: reads the images the checks name (relative to out_dir).
 std::string html_report(const GradeRun& run, const std::string& out_dir);
 
+// The checks of `lab` that passed, and the checks of the whole run.
+size_t passed_count(const LabResult& lab);
+size_t check_count(const GradeRun& run);
+
+// results.json in Gradescope's autograder format (gradescope_results.cpp):
+// a test per checkpoint, pictures of what failed within kResultsLimit.
+std::string gradescope_results_json(const GradeRun& run, const std::string& out_dir);
+
 }  // namespace grading::report
