@@ -102,8 +102,20 @@ std::string checkpoint_failure(const LabResult& lab, const CheckpointResult& cp)
 Thumbnails::Thumbnails(std::string out_dir, size_t budget, int max_side)
     : out_dir_(std::move(out_dir)), budget_(budget), max_side_(max_side) {}
 
+void Thumbnails::restart(size_t budget) {
+    budget_ = budget;
+    used_ = skipped_ = 0;
+}
+
 std::string Thumbnails::uri(const std::string& relative, bool difference) {
     if (relative.empty()) return {};
+    const std::string key = relative + (difference ? "\ndifference" : "");
+    const auto made = made_.find(key);
+    if (made != made_.end()) return made->second;
+    return made_[key] = make_uri(relative, difference);
+}
+
+std::string Thumbnails::make_uri(const std::string& relative, bool difference) {
     std::ifstream file(report::in_dir(out_dir_, relative), std::ios::binary);
     if (!file) return {};
     const std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,10 @@ std::string checkpoint_failure(const LabResult& lab, const CheckpointResult& cp)
 class Thumbnails {
 public:
     Thumbnails(std::string out_dir, size_t budget, int max_side = 160);
+    // Starts handing out pictures again with a new budget; the pictures
+    // already made are kept, so a report written again with less room
+    // (within_limit) decodes and encodes nothing twice.
+    void restart(size_t budget);
     struct Picture {
         std::string label;  // rendered | expected | difference
         std::string uri;    // data:image/png;base64,... or data:image/jpeg;base64,...
@@ -69,7 +74,9 @@ public:
 
 private:
     std::string uri(const std::string& relative, bool difference);
+    std::string make_uri(const std::string& relative, bool difference);
     std::string out_dir_;
+    std::map<std::string, std::string> made_;  // uri() by file and kind
     size_t budget_, used_ = 0, skipped_ = 0;
     int max_side_;
 };

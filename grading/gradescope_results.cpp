@@ -80,9 +80,8 @@ std::string overview_html(const GradeRun& run) {
     return h;
 }
 
-std::string results_json(const GradeRun& run, const std::string& out_dir, size_t picture_budget) {
+std::string results_json(const GradeRun& run, Thumbnails& thumbnails) {
     nlohmann::ordered_json tests = nlohmann::ordered_json::array();
-    Thumbnails thumbnails(out_dir, picture_budget);
     nlohmann::ordered_json labs = nlohmann::ordered_json::array();
     for (size_t li = 0; li < run.labs.size(); ++li) {
         const LabResult& lab = run.labs[li];
@@ -137,8 +136,11 @@ std::string results_json(const GradeRun& run, const std::string& out_dir, size_t
 
 std::string gradescope_results_json(const GradeRun& run, const std::string& out_dir) {
     // Pictures, checkpoint by checkpoint in order, in what the text leaves of the limit.
-    return within_limit(kResultsLimit,
-                        [&](size_t budget) { return results_json(run, out_dir, budget); });
+    Thumbnails thumbnails(out_dir, 0);
+    return within_limit(kResultsLimit, [&](size_t budget) {
+        thumbnails.restart(budget);
+        return results_json(run, thumbnails);
+    });
 }
 
 }  // namespace report

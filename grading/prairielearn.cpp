@@ -96,9 +96,7 @@ std::string lab_logs(const GradeRun& run) {
     return text;
 }
 
-std::string results_json(const GradeRun& run, const std::string& out_dir, size_t picture_budget,
-                         size_t cap) {
-    Thumbnails thumbnails(out_dir, picture_budget);
+std::string results_json(const GradeRun& run, Thumbnails& thumbnails, size_t cap) {
     ordered_json tests = ordered_json::array();
     size_t passed = 0;
     for (const LabResult& lab : run.labs)
@@ -127,13 +125,16 @@ std::string prairielearn_results_json(const GradeRun& run, const std::string& ou
     // Text that alone would break the limit (a child's error repeated in every
     // check, say) is cut: each text field to its share of half the limit.
     size_t cap = std::numeric_limits<size_t>::max();
-    if (results_json(run, out_dir, 0, cap).size() > kResultsLimit) {
+    Thumbnails thumbnails(out_dir, 0);
+    if (results_json(run, thumbnails, cap).size() > kResultsLimit) {
         size_t fields = 2;
         for (const LabResult& lab : run.labs) fields += 3 * by_checkpoint(lab).size();
         cap = kResultsLimit / (2 * fields);
     }
-    return within_limit(kResultsLimit,
-                        [&](size_t budget) { return results_json(run, out_dir, budget, cap); });
+    return within_limit(kResultsLimit, [&](size_t budget) {
+        thumbnails.restart(budget);
+        return results_json(run, thumbnails, cap);
+    });
 }
 
 std::string prairielearn_not_gradable_json(const std::string& reason, const std::string& log) {
