@@ -1,10 +1,14 @@
-// PNG encoders on the course's own frames: every blessed reference image
-// (labs/*/reference/*.png, the same scenes and sizes as the checkpoints),
-// decoded once, then encoded by each candidate. Prints milliseconds per
-// image, megapixels per second, the mean size, and each encoder's time as a
-// ratio of stb_image_write's (the encoder the framework used first). Every
-// encoding is decoded again (by stb_image) and compared with its source, so a
-// fast encoder that writes the wrong pixels cannot win.
+// PNG encoders and decoders on the course's own frames: every blessed
+// reference image (labs/*/reference/*.png, the same scenes and sizes as the
+// checkpoints), decoded once, then encoded by each candidate, the
+// framework's own (fw::encode_png: libdeflate under a container written by
+// hand, at several levels) among them. Prints milliseconds per image,
+// megapixels per second, the mean size, and each encoder's time as a ratio of
+// stb_image_write's (the encoder the framework used first). Every encoding is
+// decoded again (by stb_image) and compared with its source, so a fast
+// encoder that writes the wrong pixels cannot win. Then the decoders (stb_image
+// and libspng) on the files fw::encode_png writes and on libpng's (level 1,
+// the same filter and colour types).
 //
 //   build/bin/bench_png [ROUNDS=3]
 #include <png.h>
@@ -31,6 +35,7 @@ struct Frame {
     std::string name;
     int width = 0, height = 0;
     std::vector<unsigned char> rgba;  // top row first, as PNG stores it
+    fw::Image image;                  // the same, bottom row first (the framework's order)
 };
 
 void append(void* context, void* data, int size) {
@@ -49,7 +54,24 @@ void png_append(png_structp png, png_bytep data, png_size_t size) {
     static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<char*>(data), size);
 }
 
-std::string libpng_encode(const Frame& f, int level, int filters, int strategy = Z_FILTERED) {
+// The smallest colour type that keeps a frame's pixels: 0 grey, 2 RGB, 6 RGBA.
+int smallest_colour_type(const Frame& f) {
+    unsigned opaque = 1, grey = 1;
+    for (size_t i = 0; i < f.rgba.size(); i += 4) {
+        opaque &= f.rgba[i + 3] == 255;
+        grey &= (f.rgba[i] == f.rgba[i + 1]) & (f.rgba[i + 1] == f.rgba[i + 2]);
+    }
+    return !opaque ? PNG_COLOR_TYPE_RGBA : grey ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB;
+}
+
+// libpng writing `f` as colour type `type`, its rows first packed to that
+// type's channels (the first 1, 3 or all 4 of each pixel).
+std::string libpng_encode(const Frame& f, int level, int filters, int strategy = Z_FILTERED,
+                          int type = PNG_COLOR_TYPE_RGBA) {
+    const size_t channels = type == PNG_COLOR_TYPE_RGBA ? 4 : type == PNG_COLOR_TYPE_RGB ? 3 : 1;
+    std::vector<unsigned char> packed(static_cast<size_t>(f.width) * f.height * channels);
+    for (size_t i = 0; i < packed.size() / channels; ++i)
+        for (size_t c = 0; c < channels; ++c) packed[i * channels + c] = f.rgba[4 * i + c];
     std::string out;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png_create_info_struct(png);
@@ -62,15 +84,37 @@ std::string libpng_encode(const Frame& f, int level, int filters, int strategy =
     png_set_compression_strategy(png, strategy);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, filters);
     png_set_IHDR(png, info, static_cast<png_uint_32>(f.width), static_cast<png_uint_32>(f.height),
-                 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
-                 PNG_FILTER_TYPE_BASE);
+                 8, type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
     png_write_info(png, info);
     for (int y = 0; y < f.height; ++y)
-        png_write_row(png,
-                      const_cast<png_bytep>(f.rgba.data() + static_cast<size_t>(y) * f.width * 4));
+        png_write_row(png, packed.data() + static_cast<size_t>(y) * f.width * channels);
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     return out;
+}
+
+// libspng's decoder, to 8-bit RGBA, top row first.
+bool spng_decode(const std::string& png, std::vector<unsigned char>& rgba) {
+    spng_ctx* ctx = spng_ctx_new(0);
+    size_t size = 0;
+    bool ok = spng_set_png_buffer(ctx, png.data(), png.size()) == 0 &&
+              spng_decoded_image_size(ctx, SPNG_FMT_RGBA8, &size) == 0;
+    if (ok) {
+        rgba.resize(size);
+        ok = spng_decode_image(ctx, rgba.data(), size, SPNG_FMT_RGBA8, 0) == 0;
+    }
+    spng_ctx_free(ctx);
+    return ok;
+}
+
+bool stb_decode(const std::string& png, std::vector<unsigned char>& rgba) {
+    int w = 0, h = 0, n = 0;
+    unsigned char* data = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(png.data()),
+                                                static_cast<int>(png.size()), &w, &h, &n, 4);
+    if (!data) return false;
+    rgba.assign(data, data + static_cast<size_t>(w) * h * 4);
+    stbi_image_free(data);
+    return true;
 }
 
 std::string spng_encode(const Frame& f, int level, int filters) {
@@ -121,9 +165,17 @@ int main(int argc, char** argv) {
             int w = 0, h = 0, n = 0;
             unsigned char* data = stbi_load(file.path().c_str(), &w, &h, &n, 4);
             if (!data) continue;
-            frames.push_back(
-                {file.path().string(), w, h, {data, data + static_cast<size_t>(w) * h * 4}});
+            Frame frame{file.path().string(),
+                        w,
+                        h,
+                        {data, data + static_cast<size_t>(w) * h * 4},
+                        fw::Image(w, h)};
             stbi_image_free(data);
+            for (int y = 0; y < h; ++y)
+                std::memcpy(&frame.image.at(0, h - 1 - y),
+                            frame.rgba.data() + static_cast<size_t>(y) * w * 4,
+                            static_cast<size_t>(w) * 4);
+            frames.push_back(std::move(frame));
         }
     }
     if (frames.empty()) {
@@ -143,6 +195,10 @@ int main(int argc, char** argv) {
          [=](const Frame& f) { return libpng_encode(f, 1, up); }},
         {"libpng + zlib level 1, no filter",
          [=](const Frame& f) { return libpng_encode(f, 1, none); }},
+        {"libpng + zlib level 1, filter up, smallest colour type",
+         [=](const Frame& f) {
+             return libpng_encode(f, 1, up, Z_FILTERED, smallest_colour_type(f));
+         }},
         {"libpng + zlib level 1, filter up, RLE",
          [=](const Frame& f) { return libpng_encode(f, 1, up, Z_RLE); }},
         {"libspng + zlib level 1, filter up",
@@ -152,6 +208,12 @@ int main(int argc, char** argv) {
         {"libspng + zlib level 6, all filters",
          [](const Frame& f) { return spng_encode(f, 6, SPNG_FILTER_CHOICE_ALL); }},
     };
+    std::vector<Encoder> all_encoders = encoders;
+    for (int level : {1, 2, 3, 4, 6})
+        all_encoders.push_back(
+            {"fw::encode_png, libdeflate level " + std::to_string(level) +
+                 (level == fw::kPngLevel ? " (used)" : ""),
+             [level](const Frame& f) { return fw::encode_png(f.image, level); }});
 
     std::printf("PNG encoders on %zu reference frames (%.1f megapixels), best of %d rounds\n",
                 frames.size(), megapixels, rounds);
@@ -159,7 +221,7 @@ int main(int argc, char** argv) {
                 "vs stb");
     double stb_seconds = 0;
     int failures = 0;
-    for (const Encoder& e : encoders) {
+    for (const Encoder& e : all_encoders) {
         double best = 1e30;
         size_t bytes = 0;
         for (int r = 0; r < rounds; ++r) {
@@ -189,6 +251,42 @@ int main(int argc, char** argv) {
         std::printf("%-42s %10.2f %10.1f %12zu %10.2f\n", e.name.c_str(),
                     1000 * best / frames.size(), megapixels / best, bytes / frames.size(),
                     best / stb_seconds);
+    }
+
+    // The decoders, on the files fw::encode_png writes and on libpng's.
+    std::printf("\nPNG decoders (to 8-bit RGBA), best of %d rounds\n", rounds);
+    std::printf("%-42s %10s %10s\n", "decoder, files", "ms/image", "MP/s");
+    struct Decoder {
+        const char* name;
+        bool (*decode)(const std::string&, std::vector<unsigned char>&);
+    };
+    const Decoder decoders[] = {{"stb_image", stb_decode}, {"libspng", spng_decode}};
+    for (const bool ours : {true, false}) {
+        std::vector<std::string> files;
+        for (const Frame& f : frames)
+            files.push_back(
+                ours ? fw::encode_png(f.image)
+                     : libpng_encode(f, 1, PNG_FILTER_UP, Z_FILTERED, smallest_colour_type(f)));
+        for (const Decoder& d : decoders) {
+            double best = 1e30;
+            std::vector<unsigned char> rgba;
+            for (int r = 0; r < rounds; ++r) {
+                const auto start = std::chrono::steady_clock::now();
+                for (const std::string& png : files) d.decode(png, rgba);
+                best = std::min(best, seconds_since(start));
+            }
+            for (size_t i = 0; i < frames.size(); ++i)
+                if (!d.decode(files[i], rgba) || rgba != frames[i].rgba) {
+                    std::fprintf(stderr, "bench_png: %s does not decode %s\n", d.name,
+                                 frames[i].name.c_str());
+                    ++failures;
+                    break;
+                }
+            const std::string name =
+                std::string(d.name) + (ours ? ", fw::encode_png's" : ", libpng level 1's");
+            std::printf("%-42s %10.2f %10.1f\n", name.c_str(), 1000 * best / frames.size(),
+                        megapixels / best);
+        }
     }
     return failures ? 1 : 0;
 }

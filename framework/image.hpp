@@ -40,10 +40,16 @@ struct DepthImage {
     float at(int x, int y) const { return values[static_cast<size_t>(y) * width + x]; }
 };
 
-// PNG (RGBA, 8 bits per channel). Throw fw::Error naming the path on failure.
+// PNG, 8 bits per channel, in the smallest colour type that keeps every
+// pixel (grey, RGB, or RGBA where a pixel is not opaque). Throw fw::Error
+// naming the path on failure.
 void write_png(const std::string& path, const Image& img);
 // The PNG file's bytes, in memory.
 std::string encode_png(const Image& img);
+// The same at libdeflate's compression `level` (1 to 12; bench_png
+// compares them); the one-argument form uses kPngLevel.
+std::string encode_png(const Image& img, int level);
+inline constexpr int kPngLevel = 2;
 // A baseline JPEG's bytes (quality 1-100; alpha is dropped), for pictures
 // that must stay small.
 std::string encode_jpeg(const Image& img, int quality);

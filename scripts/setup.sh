@@ -17,8 +17,9 @@ packages=(
   libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   libglfw3-dev libimgui-dev xvfb xauth
   libglm-dev libstb-dev doctest-dev nlohmann-json3-dev libcli11-dev
-  # PNG encoding (libspng), and libpng for the encoder benchmark (bench/bench_png).
-  libspng-dev libpng-dev
+  # PNG: libdeflate compresses every PNG written (framework/image.cpp);
+  # libspng and libpng only for the encoder benchmark (bench/bench_png).
+  libdeflate-dev libspng-dev libpng-dev
   # `lab serve`: HTTP and WebSocket (CivetWeb) and JPEG frames (libjpeg-turbo).
   libcivetweb-dev libturbojpeg0-dev
   # The grading child's seccomp filter.

@@ -95,6 +95,43 @@ TEST_CASE("PNG: a whole frame of noise and gradients round trips exactly") {
     CHECK(back.pixels == img.pixels);
 }
 
+TEST_CASE("PNG: the colour type is the smallest that keeps every pixel, and each round trips") {
+    // IHDR's colour type is byte 25 of the file: 0 grey, 2 RGB, 6 RGBA.
+    auto colour_type = [](const std::string& png) { return static_cast<int>(png.at(25)); };
+    Image grey(40, 30);
+    for (int y = 0; y < grey.height; ++y)
+        for (int x = 0; x < grey.width; ++x) {
+            const auto v = std::uint8_t(x * 6 + y);
+            grey.at(x, y) = {v, v, v, 255};
+        }
+    Image rgb = grey;
+    rgb.at(39, 29) = {1, 2, 3, 255};  // one pixel that is not grey
+    Image rgba = rgb;
+    rgba.at(0, 0).a = 254;  // one pixel that is not opaque
+    Image grey_alpha = grey;
+    grey_alpha.at(5, 5).a = 0;  // grey, but not opaque: RGBA keeps it
+    const struct {
+        const char* name;
+        const Image& image;
+        int type;
+    } cases[] = {
+        {"grey", grey, 0}, {"rgb", rgb, 2}, {"rgba", rgba, 6}, {"grey_alpha", grey_alpha, 6}};
+    for (const auto& c : cases) {
+        CAPTURE(c.name);
+        const std::string png = fw::encode_png(c.image);
+        CHECK(colour_type(png) == c.type);
+        CHECK(fw::decode_png(png, c.name).pixels == c.image.pixels);
+        // And by stb_image directly, top row first.
+        int w = 0, h = 0, n = 0;
+        unsigned char* raw =
+            stbi_load_from_memory(reinterpret_cast<const unsigned char*>(png.data()),
+                                  static_cast<int>(png.size()), &w, &h, &n, 4);
+        REQUIRE(raw != nullptr);
+        CHECK(std::memcmp(raw, &c.image.at(0, c.image.height - 1), 4) == 0);
+        stbi_image_free(raw);
+    }
+}
+
 TEST_CASE("PAM round trip is exact, top row first, with the header of docs/contract.md") {
     Image img(3, 2);
     for (int y = 0; y < 2; ++y)
