@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "framework/error.hpp"
 #include "framework/image.hpp"
@@ -302,6 +303,39 @@ TEST_CASE("compare: identical images pass with no failed pixels") {
     CHECK(r.total_pixels == 64 * 48);
     CHECK(r.max_channel_error == 0);
     CHECK(r.difference.width == 64);
+}
+
+TEST_CASE(
+    "compare: a passed pixel's grey is a quarter of its luminance, rounded, for every colour") {
+    // The difference image's grey is 0.25 * (0.2126 r + 0.7152 g + 0.0722 b)
+    // + 0.5, truncated. Worked out in whole numbers it is exact but for the
+    // colours that land half-way, and for those the rounding of the
+    // floating-point form decides: every such colour, and every colour where
+    // the whole-number form alone would round the other way, is checked here.
+    auto grey_of = [](int r, int g, int b) {
+        return static_cast<std::uint8_t>(0.25 * (0.2126 * r + 0.7152 * g + 0.0722 * b) + 0.5);
+    };
+    std::vector<Rgba8> hard;
+    for (int r = 0; r < 256; ++r)
+        for (int g = 0; g < 256; ++g)
+            for (int b = 0; b < 256; ++b) {
+                const unsigned n = 2126u * r + 7152u * g + 722u * b + 20000u;
+                if (n % 40000u == 0 || n / 40000u != grey_of(r, g, b))
+                    hard.push_back({std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 255});
+            }
+    CHECK(hard.size() > 800);  // 845 half-way colours on an IEEE double machine
+    Image img(static_cast<int>(hard.size()), 1);
+    img.pixels = hard;
+    const fw::CompareResult c = fw::compare_images(img, img);
+    REQUIRE(c.passed);
+    for (size_t i = 0; i < hard.size(); ++i) {
+        const Rgba8 p = hard[i], d = c.difference.pixels[i];
+        CAPTURE(int(p.r));
+        CAPTURE(int(p.g));
+        CAPTURE(int(p.b));
+        const std::uint8_t want = grey_of(p.r, p.g, p.b);
+        REQUIRE((d.r == want && d.g == want && d.b == want && d.a == 255));
+    }
 }
 
 TEST_CASE("compare: a one-pixel edge shift passes, a 10-pixel move fails") {
