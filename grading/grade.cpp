@@ -200,8 +200,6 @@ int grade_command(const GradeOptions& options) {
     // Orphans of a lab's child (a setsid() daemon) come back to course.
     if (!become_subreaper()) throw fw::Error("cannot make course a child subreaper (prctl)");
     const unsigned seed = seed_from_env();
-    std::vector<LabPlan> plans;
-    for (const LabData& lab : labs) plans.push_back(plan_lab(lab, seed, PlanFor::Grading));
     ChildLimits limits;
     limits.timeout_seconds = options.timeout_seconds;
     ShaderCache cache;
@@ -238,14 +236,17 @@ int grade_command(const GradeOptions& options) {
     // --jobs workers take labs in order; each lab is one child.
     std::mutex print_mutex;
     parallel_for(labs.size(), options.jobs, [&](size_t i) {
-        LabChild child =
-            run_lab_child(lab_binary, plans[i].job, options.backend, limits, as, cache);
+        // Planned here, on the lab's worker, while other labs' children run:
+        // its unit checks' random arguments (seeded by the run's seed and the
+        // lab) are thousands of values.
+        const LabPlan plan = plan_lab(labs[i], seed, PlanFor::Grading);
+        LabChild child = run_lab_child(lab_binary, plan.job, options.backend, limits, as, cache);
         LabResult& result = run.labs[i];
         result.lab = labs[i].id;
         result.status = child.run.status;
         result.log = child.run.log;
         result.seconds = child.run.seconds;
-        result.checks = judge_lab(labs[i], plans[i], *child.outputs, options.out,
+        result.checks = judge_lab(labs[i], plan, *child.outputs, options.out,
                                   judging_threads(options.jobs));
         if (child.run.ok()) {
             const std::string shader_error = shader_error_status(*child.outputs);
