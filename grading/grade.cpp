@@ -246,8 +246,8 @@ int grade_command(const GradeOptions& options) {
         result.status = child.run.status;
         result.log = child.run.log;
         result.seconds = child.run.seconds;
-        result.checks = judge_lab(labs[i], plan, *child.outputs, options.out,
-                                  judging_threads(options.jobs));
+        result.checks =
+            judge_lab(labs[i], plan, *child.outputs, options.out, judging_threads(options.jobs));
         if (child.run.ok()) {
             const std::string shader_error = shader_error_status(*child.outputs);
             if (!shader_error.empty()) result.status = shader_error;
