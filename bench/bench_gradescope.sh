@@ -10,7 +10,9 @@
 # of half a core and a 768 MB memory limit, where root can make one (cgroup v1
 # cpu and memory controllers, or v2); and there again without the shader
 # cache setup.sh warmed (course-bin/shader-cache), as every submission was
-# graded before there was one. Prints, per run, the seconds course
+# graded before there was one. Every run has Gradescope's profile: root
+# without CAP_SYS_ADMIN, /sys/fs/cgroup read-only (so every lab's child stays
+# in the measured cgroup). Prints, per run, the seconds course
 # autograde spent copying, building and grading and the total, and the peak
 # memory (the cgroup's peak, page cache included) and whether the limit
 # killed anything. Needs root. Prints figures; it is not a test.
@@ -86,6 +88,11 @@ run() {
   read -r -a groups <<<"$folders"
   local prefix=()
   [ "$pin" = pin ] && prefix=(taskset -c 0)
+  # Gradescope's profile: root without CAP_SYS_ADMIN and no cgroup it may
+  # write, so that course makes no cgroups of its own, whose labs would run
+  # outside this one's quota and memory limit (and outside its peak).
+  prefix+=(unshare --mount sh -c
+    'mount -t tmpfs -o ro none /sys/fs/cgroup && exec setpriv --bounding-set=-sys_admin -- "$@"' sh)
   t0=$(date +%s.%N)
   ( for g in "${groups[@]}"; do echo $BASHPID >"$g/cgroup.procs"; done
     exec env AUTOGRADER_ROOT="$ag" "${prefix[@]}" bash "$ag/run_autograder" ) >"$log" 2>&1
@@ -101,6 +108,8 @@ run() {
     fi
     peak+=", OOM kills ${kills:-?}"
   fi
+  layers=$(sed -n 's/^Sandbox: //p' "$log" | tr ';' '\n' | sed -n 's/^ *on: \([^(]*\) (.*/\1/p' |
+    paste -sd, -)
   step() { sed -n "s/.*$1.* took \([0-9.]*\) s.*/\1/p" "$log" | tail -1; }
   printf '%-9s %-20s %6s %6s %6s %7.1f  %-22s %s\n' "$label" "$machine" "$(step copying)" \
     "$(step building)" "$(step grading)" "$(awk -v a="$t0" -v b="$t1" 'BEGIN {print b - a}')" \
@@ -132,3 +141,4 @@ for scenario in "one lab:labs/00_" "all labs:labs/"; do
     fi
   done
 done
+echo "sandbox layers on in the last run: ${layers:-unknown}"
