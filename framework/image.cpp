@@ -177,9 +177,13 @@ std::string encode_png(const Image& img, int level) {
     // 8 bits a channel, the colour type, deflate, filters per row, no interlace.
     ihdr += {8, static_cast<char>(color_type), 0, 0, 0};
     std::string bytes("\x89PNG\r\n\x1a\n", 8);
-    bytes.reserve(8 + 25 + idat.size() + 12 + 12);
+    // The stream goes in IDAT chunks of at most 1 MiB: a chunk's length must
+    // stay below 2^31, and readers take any split.
+    constexpr size_t kIdat = size_t(1) << 20;
+    bytes.reserve(8 + 25 + idat.size() + 12 * (idat.size() / kIdat + 2));
     put_chunk(bytes, "IHDR", ihdr);
-    put_chunk(bytes, "IDAT", idat);
+    for (size_t at = 0; at < idat.size(); at += kIdat)
+        put_chunk(bytes, "IDAT", idat.substr(at, kIdat));
     put_chunk(bytes, "IEND", "");
     return bytes;
 }

@@ -96,6 +96,22 @@ TEST_CASE("PNG: a whole frame of noise and gradients round trips exactly") {
     CHECK(back.pixels == img.pixels);
 }
 
+TEST_CASE("PNG: a frame of pure noise spans several IDAT chunks and round trips exactly") {
+    Image img(1024, 1024);
+    unsigned seed = 987654321u;
+    for (Rgba8& p : img.pixels) {
+        seed = seed * 1664525u + 1013904223u;
+        p = {std::uint8_t(seed >> 24), std::uint8_t(seed >> 16), std::uint8_t(seed >> 8),
+             std::uint8_t(seed >> 1)};
+    }
+    const std::string png = fw::encode_png(img);
+    int chunks = 0;
+    for (size_t at = png.find("IDAT"); at != std::string::npos; at = png.find("IDAT", at + 4))
+        ++chunks;
+    CHECK(chunks >= 4);  // 4 MiB that do not compress, in chunks of at most 1 MiB
+    CHECK(fw::decode_png(png, "noise").pixels == img.pixels);
+}
+
 TEST_CASE("PNG: the colour type is the smallest that keeps every pixel, and each round trips") {
     // IHDR's colour type is byte 25 of the file: 0 grey, 2 RGB, 6 RGBA.
     auto colour_type = [](const std::string& png) { return static_cast<int>(png.at(25)); };
