@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -235,7 +236,17 @@ int grade_command(const GradeOptions& options) {
     run.labs.resize(labs.size());
     // --jobs workers take labs in order; each lab is one child.
     std::mutex print_mutex;
+    // Labs between their plan and their verdict: those sharing the cores.
+    std::atomic<int> in_flight{0};
+    struct InFlight {
+        std::atomic<int>& count;
+        explicit InFlight(std::atomic<int>& c) : count(c) { ++count; }
+        ~InFlight() { --count; }
+        InFlight(const InFlight&) = delete;
+        InFlight& operator=(const InFlight&) = delete;
+    };
     parallel_for(labs.size(), options.jobs, [&](size_t i) {
+        const InFlight flight(in_flight);
         // Planned here, on the lab's worker, while other labs' children run:
         // its unit checks' random arguments (seeded by the run's seed and the
         // lab) are thousands of values.
@@ -247,7 +258,7 @@ int grade_command(const GradeOptions& options) {
         result.log = child.run.log;
         result.seconds = child.run.seconds;
         result.checks =
-            judge_lab(labs[i], plan, *child.outputs, options.out, judging_threads(options.jobs));
+            judge_lab(labs[i], plan, *child.outputs, options.out, judging_threads(in_flight));
         if (child.run.ok()) {
             const std::string shader_error = shader_error_status(*child.outputs);
             if (!shader_error.empty()) result.status = shader_error;

@@ -68,8 +68,8 @@ unsigned usable_cores() {
     return std::max(1u, cores);
 }
 
-int judging_threads(int jobs) {
-    return std::clamp(static_cast<int>(usable_cores()) / std::max(1, jobs), 1, 8);
+int judging_threads(int labs_in_flight) {
+    return std::clamp(static_cast<int>(usable_cores()) / std::max(1, labs_in_flight), 1, 8);
 }
 
 }  // namespace grading

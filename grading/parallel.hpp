@@ -47,8 +47,9 @@ unsigned affinity_cpus();
 // up; at least one.
 unsigned usable_cores();
 
-// The threads that judging one lab may use when `jobs` labs are graded at
-// once: the usable cores' share per lab, at least one, at most 8.
-int judging_threads(int jobs);
+// The threads that judging one lab may use while `labs_in_flight` labs (this
+// one among them) are being graded: the usable cores' share per lab, at
+// least one, at most 8. The last labs of a run, in flight alone, get more.
+int judging_threads(int labs_in_flight);
 
 }  // namespace grading
