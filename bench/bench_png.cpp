@@ -64,14 +64,17 @@ int smallest_colour_type(const Frame& f) {
     return !opaque ? PNG_COLOR_TYPE_RGBA : grey ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB;
 }
 
-// libpng writing `f` as colour type `type`, its rows first packed to that
-// type's channels (the first 1, 3 or all 4 of each pixel).
+// libpng writing `f` as colour type `type`; grey and RGB rows are first
+// packed to that type's channels (the first 1 or 3 of each pixel).
 std::string libpng_encode(const Frame& f, int level, int filters, int strategy = Z_FILTERED,
                           int type = PNG_COLOR_TYPE_RGBA) {
     const size_t channels = type == PNG_COLOR_TYPE_RGBA ? 4 : type == PNG_COLOR_TYPE_RGB ? 3 : 1;
-    std::vector<unsigned char> packed(static_cast<size_t>(f.width) * f.height * channels);
-    for (size_t i = 0; i < packed.size() / channels; ++i)
-        for (size_t c = 0; c < channels; ++c) packed[i * channels + c] = f.rgba[4 * i + c];
+    std::vector<unsigned char> packed;
+    if (channels != 4) {
+        packed.resize(static_cast<size_t>(f.width) * f.height * channels);
+        for (size_t i = 0; i < packed.size() / channels; ++i)
+            for (size_t c = 0; c < channels; ++c) packed[i * channels + c] = f.rgba[4 * i + c];
+    }
     std::string out;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png_create_info_struct(png);
@@ -87,7 +90,8 @@ std::string libpng_encode(const Frame& f, int level, int filters, int strategy =
                  8, type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
     png_write_info(png, info);
     for (int y = 0; y < f.height; ++y)
-        png_write_row(png, packed.data() + static_cast<size_t>(y) * f.width * channels);
+        png_write_row(png, const_cast<png_bytep>((channels == 4 ? f.rgba.data() : packed.data()) +
+                                                 static_cast<size_t>(y) * f.width * channels));
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     return out;

@@ -144,25 +144,33 @@ std::string encode_png(const Image& img, int level) {
     const int channels = !opaque ? 4 : grey ? 1 : 3;
     const std::uint8_t color_type = !opaque ? 6 : grey ? 0 : 2;
     const size_t row = static_cast<size_t>(w) * channels;
-    // Filtered rows, top row first (PNG's order; the image is stored bottom first).
+    // Filtered rows, top row first (PNG's order; the image is stored bottom
+    // first). RGBA rows are filtered where they lie; grey and RGB ones are
+    // packed first, into two buffers that take turns.
     std::vector<std::uint8_t> filtered((row + 1) * h);
-    std::vector<std::uint8_t> above(row, 0), here(row);
+    const std::vector<std::uint8_t> zeros(row, 0);
+    std::vector<std::uint8_t> packed[2];
+    if (channels != 4) packed[0].resize(row), packed[1].resize(row);
+    const std::uint8_t* above = zeros.data();
     for (int y = 0; y < h; ++y) {
         const Rgba8* src = &img.at(0, h - 1 - y);
-        if (channels == 4)
-            std::memcpy(here.data(), src, row);
-        else if (channels == 3)
-            for (int x = 0; x < w; ++x) {
-                here[3 * x] = src[x].r;
-                here[3 * x + 1] = src[x].g;
-                here[3 * x + 2] = src[x].b;
-            }
-        else
-            for (int x = 0; x < w; ++x) here[x] = src[x].r;
+        const std::uint8_t* here = reinterpret_cast<const std::uint8_t*>(src);
+        if (channels != 4) {
+            std::uint8_t* out = packed[y % 2].data();
+            for (int x = 0; x < w; ++x)
+                if (channels == 3) {
+                    out[3 * x] = src[x].r;
+                    out[3 * x + 1] = src[x].g;
+                    out[3 * x + 2] = src[x].b;
+                } else {
+                    out[x] = src[x].r;
+                }
+            here = out;
+        }
         std::uint8_t* out = &filtered[(row + 1) * y];
         out[0] = 2;  // "up": each byte less the one above it
         for (size_t i = 0; i < row; ++i) out[1 + i] = static_cast<std::uint8_t>(here[i] - above[i]);
-        std::swap(above, here);
+        above = here;
     }
     libdeflate_compressor* c = compressor(level);
     if (!c) throw Error("cannot encode a PNG: out of memory for the compressor");
