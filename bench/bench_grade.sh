@@ -49,16 +49,18 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
 wrap=()  # a command put before course (a sandbox profile's)
 labs=$("$bin/lab" list | awk '{print $2}')
 
-export MESA_SHADER_CACHE_DIR="$out/mesa-cache"
+# Mesa's cache and NVIDIA's (on a GPU); "cold" turns both off.
+export MESA_SHADER_CACHE_DIR="$out/mesa-cache" __GL_SHADER_DISK_CACHE_PATH="$out/nv-cache"
+cold() { MESA_SHADER_CACHE_DISABLE=true __GL_SHADER_DISK_CACHE=0 "$@"; }
 echo "course grade, median of $runs runs, $(nproc) cores, options: ${*:-(none)}"
-cold1=$(MESA_SHADER_CACHE_DISABLE=true median_seconds --jobs 1 "$@")
-cold2=$(MESA_SHADER_CACHE_DISABLE=true median_seconds --jobs 2 "$@")
+cold1=$(cold median_seconds --jobs 1 "$@")
+cold2=$(cold median_seconds --jobs 2 "$@")
 median_seconds --jobs 1 "$@" >/dev/null  # fills the cache
 warm1=$(median_seconds --jobs 1 "$@")
 warm2=$(median_seconds --jobs 2 "$@")
 "$bin/course" warm-cache "$out/seed" >/dev/null
-seed1=$(MESA_SHADER_CACHE_DISABLE=true median_seconds --jobs 1 --shader-cache "$out/seed" "$@")
-seed2=$(MESA_SHADER_CACHE_DISABLE=true median_seconds --jobs 2 --shader-cache "$out/seed" "$@")
+seed1=$(cold median_seconds --jobs 1 --shader-cache "$out/seed" "$@")
+seed2=$(cold median_seconds --jobs 2 --shader-cache "$out/seed" "$@")
 # The sandbox's privileged layers (namespaces, cgroups) against the same
 # grading without them: root without CAP_SYS_ADMIN and with no cgroups, as in
 # Gradescope's container. Root only.
@@ -79,7 +81,7 @@ printf '%-44s %8s %8s %8s\n' "  --jobs 2" "$cold2" "$seed2" "$warm2"
 echo "per lab, --jobs 1 (seconds):"
 worst=0
 for lab in $labs; do
-  c=$(MESA_SHADER_CACHE_DISABLE=true median_seconds "$lab" --jobs 1 "$@")
+  c=$(cold median_seconds "$lab" --jobs 1 "$@")
   w=$(median_seconds "$lab" --jobs 1 "$@")
   printf '  %-42s %8s %8s\n' "$lab" "$c" "$w"
   worst=$(awk -v a="$worst" -v b="$w" 'BEGIN {print (b > a) ? b : a}')

@@ -4,7 +4,8 @@
 // bless, look at them, commit them. The backend follows the same rule as
 // `course grade` (--backend, else $LAB_BACKEND, else auto: EGL, then OSMesa);
 // the two backends render every checkpoint alike (tests/tools/test_backends).
-// `course warm-cache` runs the same children to fill a Mesa shader cache.
+// `course warm-cache` runs the same children to fill a shader cache (Mesa's or
+// NVIDIA's).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -104,6 +105,15 @@ int warm_cache_command(const WarmCacheOptions& options) {
     }
     std::printf("shader cache in %s: %s\n", cache.dir.c_str(),
                 mib_text(directory_bytes(cache.dir)).c_str());
+    bool written = false;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(cache.dir, ec))
+        written = written || e.is_regular_file();
+    if (!written)
+        std::fprintf(stderr,
+                     "course: warm-cache: warning: the driver wrote no shader cache into %s: it "
+                     "keeps none that course can direct (Mesa's and NVIDIA's can be), so "
+                     "--shader-cache will not spare any compiling\n",
+                     cache.dir.c_str());
     return 0;
 }
 

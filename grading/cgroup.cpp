@@ -77,16 +77,32 @@ std::atomic<unsigned> g_next_lab{0};
 
 namespace {
 
-// Removes what a killed course left in `top`: the (empty) cgroups of a
-// course-PID whose process is gone. A cgroup that still holds a process
-// cannot be removed, so nothing running is touched.
-void remove_stale(const std::string& top) {
+// "course-<PID namespace>-": the start of the cgroups' names made by a course
+// of this PID namespace. A PID means nothing outside its namespace, and
+// courses of several namespaces (containers without cgroup namespaces, a
+// chroot beside its host) can share one hierarchy; the namespace's inode
+// number tells them apart on one kernel.
+std::string own_prefix() {
+    struct stat ns {};
+    const unsigned long long inode =
+        stat("/proc/self/ns/pid", &ns) == 0 ? static_cast<unsigned long long>(ns.st_ino) : 0;
+    return "course-" + std::to_string(inode) + "-";
+}
+
+// Removes what a killed course of this PID namespace left in `top`: the
+// (empty) cgroups of a course-NS-PID whose process is gone. A cgroup that
+// still holds a process cannot be removed, so nothing running is touched;
+// another namespace's cgroups are never looked at, since its PIDs cannot be
+// checked from here.
+void remove_stale(const std::string& top, const std::string& prefix) {
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(top, ec)) {
         const std::string name = e.path().filename().string();
-        if (name.rfind("course-", 0) != 0 || !e.is_directory(ec)) continue;
-        const long pid = std::strtol(name.c_str() + 7, nullptr, 10);
-        if (pid <= 0 || kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        if (name.rfind(prefix, 0) != 0 || !e.is_directory(ec)) continue;
+        char* end = nullptr;
+        const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
+        if (pid <= 0 || *end != '\0') continue;
+        if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
         for (const auto& lab : fs::directory_iterator(e.path(), ec))
             if (lab.is_directory(ec)) rmdir(lab.path().c_str());
         rmdir(e.path().c_str());
@@ -96,7 +112,8 @@ void remove_stale(const std::string& top) {
 }  // namespace
 
 std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
-    const std::string name = "course-" + std::to_string(getpid());
+    const std::string prefix = own_prefix();
+    const std::string name = prefix + std::to_string(getpid());
     std::unique_ptr<CgroupRoot> root(new CgroupRoot);
     std::error_code ec;
     // v2, with the memory and pids controllers (and cpu, where there is one)
@@ -106,7 +123,7 @@ std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
         const std::string controllers = read_file(v2 + "/cgroup.controllers");
         if (controllers.find("memory") != std::string::npos &&
             controllers.find("pids") != std::string::npos) {
-            remove_stale(v2);
+            remove_stale(v2, prefix);
             const std::string dir = v2 + "/" + name;
             for (const bool cpu : {true, false}) {
                 if (cpu && controllers.find("cpu") == std::string::npos) continue;
@@ -133,7 +150,7 @@ std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
         return nullptr;
     }
     for (const std::string& top : {memory, pids}) {
-        remove_stale(top);
+        remove_stale(top, prefix);
         const std::string dir = top + "/" + name;
         if (!fs::create_directory(dir, ec)) {
             why = "cannot make " + dir + " (" + ec.message() + ")";
@@ -143,7 +160,7 @@ std::unique_ptr<CgroupRoot> CgroupRoot::make(std::string& why) {
     }
     // The cpu hierarchy where it is separate and writable: an equal share per lab.
     if (const std::string cpu = cgroup_mount("cgroup", "cpu"); !cpu.empty() && cpu != memory) {
-        remove_stale(cpu);
+        remove_stale(cpu, prefix);
         const std::string dir = cpu + "/" + name;
         if (fs::create_directory(dir, ec)) {
             root->dirs_.push_back(dir);

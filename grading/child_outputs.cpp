@@ -102,8 +102,11 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                 throw fw::Error("cannot copy the shader cache '" + shader_cache.dir +
                                 "' into the lab's work directory: " + ec.message());
         }
-        env = {"MESA_SHADER_CACHE_DIR=" + cache, "MESA_DISK_CACHE_SINGLE_FILE=1",
-               "MESA_SHADER_CACHE_DISABLE=false"};
+        // Mesa's cache (llvmpipe, and Mesa's GPU drivers) and NVIDIA's, both
+        // in the copy; a driver that keeps neither compiles every shader.
+        env = {"MESA_SHADER_CACHE_DIR=" + cache,       "MESA_DISK_CACHE_SINGLE_FILE=1",
+               "MESA_SHADER_CACHE_DISABLE=false",      "__GL_SHADER_DISK_CACHE=1",
+               "__GL_SHADER_DISK_CACHE_PATH=" + cache, "__GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1"};
     }
     child.dir->hand_over();
     std::vector<std::string> argv = {lab_binary, "grade-child", "--job", job_path, "--out", dir};

@@ -25,7 +25,7 @@ struct GradeOptions {
     std::string format = "gradescope";
     std::string results;
     bool progress = true;  // a line per lab as it finishes
-    // --shader-cache: a Mesa shader cache made by `course warm-cache`; each
+    // --shader-cache: a shader cache made by `course warm-cache`; each
     // lab's child starts from its own copy. Empty: Mesa's default.
     std::string shader_cache;
     // --sandbox: auto uses every layer the machine allows; strict refuses to

@@ -38,7 +38,7 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
         ->check(CLI::IsMember({"gradescope", "prairielearn"}));
     grade->add_option("--results", g.results, "Write results.json here (default: into --out)");
     grade->add_option("--shader-cache", g.shader_cache,
-                      "Start each lab from a copy of this Mesa shader cache (course warm-cache)");
+                      "Start each lab from a copy of this shader cache (course warm-cache)");
     grade
         ->add_option("--sandbox", g.sandbox,
                      "auto: every sandbox layer the machine allows; strict: refuse to grade "
@@ -60,8 +60,8 @@ Command add_bless(CLI::App& app, grading::BlessOptions& b) {
 }
 
 Command add_warm_cache(CLI::App& app, grading::WarmCacheOptions& w) {
-    auto* warm = app.add_subcommand("warm-cache",
-                                    "Fill a Mesa shader cache for course grade --shader-cache");
+    auto* warm = app.add_subcommand(
+        "warm-cache", "Fill a shader cache (Mesa's or NVIDIA's) for course grade --shader-cache");
     warm->add_option("DIR", w.dir, "The cache directory (created if missing)")->required();
     warm->add_option("LAB", w.labs, "Labs to render (default: all)");
     warm->add_option("--lab", w.lab_binary, "The lab executable (default: beside course)");

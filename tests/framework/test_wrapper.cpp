@@ -299,11 +299,11 @@ TEST_CASE("program library: a program that does not build fails only where it is
 TEST_CASE("program: a link error names the files and gives the linker's log") {
     fw::enable_debug_output();
     const auto link = [] {
-        fw::Program::from_files({"tests/mismatch.vert", "tests/mismatch.frag"});
+        fw::Program::from_files({"tests/unlinked.vert", "tests/unlinked.frag"});
     };
     std::string msg = thrown(link);
     check_mentions(msg,
-                   {"failed to link", "tests/mismatch.vert", "tests/mismatch.frag", "v_value"});
+                   {"failed to link", "tests/unlinked.vert", "tests/unlinked.frag", "displace"});
     CHECK_NOTHROW(fw::check_gl("after a failed link"));
 
     fw::Program ok = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});

@@ -385,3 +385,66 @@ TEST_CASE("sandbox: --sandbox strict refuses to grade without namespaces and cgr
         CHECK(!fs::exists(out + "/results.json"));
     }
 }
+
+namespace {
+
+// The hierarchies course makes its cgroups in: cgroup v2 where it has the
+// memory controller, else v1's memory and pids hierarchies.
+std::vector<std::string> course_cgroup_tops() {
+    std::vector<std::string> v1;
+    std::ifstream mounts("/proc/self/mounts");
+    for (std::string line; std::getline(mounts, line);) {
+        std::istringstream f(line);
+        std::string device, dir, type, options;
+        f >> device >> dir >> type >> options;
+        if (type == "cgroup2" &&
+            fw::test::read_text(dir + "/cgroup.controllers").find("memory") != std::string::npos)
+            return {dir};
+        const std::string o = "," + options + ",";
+        const bool listed = std::find(v1.begin(), v1.end(), dir) != v1.end();
+        if (type == "cgroup" && !listed && o.find(",memory,") != std::string::npos)
+            v1.insert(v1.begin(), dir);
+        else if (type == "cgroup" && !listed && o.find(",pids,") != std::string::npos)
+            v1.push_back(dir);
+    }
+    return v1;
+}
+
+}  // namespace
+
+TEST_CASE("sandbox: course removes its own PID namespace's stale cgroups, never another's") {
+    bool privileged = false;
+    for (const Profile& p : profiles()) privileged = privileged || p.privileged;
+    if (!privileged) {
+        std::printf("SKIP: course makes no cgroups on this machine (see the privileged profile)\n");
+        return;
+    }
+    // A PID never handed out (PIDs stay below pid_max): each name's course is gone.
+    const std::string dead = fw::test::read_text("/proc/sys/kernel/pid_max").substr(0, 12);
+    const std::string gone = std::to_string(std::stol(dead));
+    struct stat ns {};
+    REQUIRE(stat("/proc/self/ns/pid", &ns) == 0);
+    // This namespace's stale cgroup; another namespace's (whose PIDs mean
+    // nothing here); and the name an older course in any namespace made.
+    const std::string own = "course-" + std::to_string(ns.st_ino) + "-" + gone;
+    const std::vector<std::string> others = {"course-1-" + gone, "course-" + gone};
+    const std::vector<std::string> tops = course_cgroup_tops();
+    REQUIRE(!tops.empty());
+    for (const std::string& top : tops)
+        for (const std::string& name : {own, others[0], others[1]})
+            REQUIRE(fs::create_directories(top + "/" + name + "/lab-0"));
+    const Graded g = grade("", "pipeline", fw::test::out_dir() + "/stale-cgroups");
+    CHECK(g.exit_code == 0);
+    for (const std::string& top : tops) {
+        CAPTURE(top);
+        CHECK(!fs::exists(top + "/" + own));
+        for (const std::string& name : others) {
+            CAPTURE(name);
+            CHECK(fs::exists(top + "/" + name + "/lab-0"));
+            rmdir((top + "/" + name + "/lab-0").c_str());
+            rmdir((top + "/" + name).c_str());
+        }
+        rmdir((top + "/" + own + "/lab-0").c_str());
+        rmdir((top + "/" + own).c_str());
+    }
+}
