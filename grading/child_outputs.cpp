@@ -88,7 +88,7 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
         // Written while the directory is still course's: nothing of the
         // user's can have put a link in its place.
         std::ofstream out(job_path);
-        if (!(out << job.dump(1) << "\n")) throw fw::Error("cannot write '" + job_path + "'");
+        if (!(out << job.dump() << "\n")) throw fw::Error("cannot write '" + job_path + "'");
     }
     std::vector<std::string> env;
     if (!shader_cache.dir.empty()) {

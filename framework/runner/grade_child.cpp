@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <memory>
+#include <sstream>
 
 #include "framework/error.hpp"
 #include "framework/image.hpp"
@@ -18,14 +19,18 @@ using nlohmann::json;
 
 void write_json(const std::string& path, const json& value) {
     std::ofstream out(path);
-    if (!(out << value.dump(1) << "\n")) throw Error("cannot write '" + path + "'");
+    // Compact: course reads it, not a person, and units.json holds thousands of results.
+    if (!(out << value.dump() << "\n")) throw Error("cannot write '" + path + "'");
 }
 
 json read_job(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw Error("cannot read job file '" + path + "'");
+    // Parsed from memory: nlohmann's stream input reads a character at a time.
+    std::ostringstream text;
+    text << in.rdbuf();
     try {
-        return json::parse(in);
+        return json::parse(text.str());
     } catch (const json::parse_error& e) {
         throw Error("job file '" + path + "': " + e.what());
     }
