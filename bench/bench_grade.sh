@@ -49,8 +49,10 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
 wrap=()  # a command put before course (a sandbox profile's)
 labs=$("$bin/lab" list | awk '{print $2}')
 
-# Mesa's cache and NVIDIA's (on a GPU); "cold" turns both off.
+# Mesa's cache and NVIDIA's (on a GPU); "cold" turns both off. NVIDIA's
+# driver caches nothing, silently, where its directory does not exist yet.
 export MESA_SHADER_CACHE_DIR="$out/mesa-cache" __GL_SHADER_DISK_CACHE_PATH="$out/nv-cache"
+mkdir -p "$MESA_SHADER_CACHE_DIR" "$__GL_SHADER_DISK_CACHE_PATH"
 cold() { MESA_SHADER_CACHE_DISABLE=true __GL_SHADER_DISK_CACHE=0 "$@"; }
 echo "course grade, median of $runs runs, $(nproc) cores, options: ${*:-(none)}"
 cold1=$(cold median_seconds --jobs 1 "$@")
