@@ -64,6 +64,40 @@ int smallest_colour_type(const Frame& f) {
     return !opaque ? PNG_COLOR_TYPE_RGBA : grey ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB;
 }
 
+// What libpng_write needs, set before its setjmp.
+struct LibpngJob {
+    const unsigned char* rows;  // top row first
+    size_t row_bytes;
+    int width, height, type, level, filters, strategy;
+    std::string* out;
+};
+
+// libpng's calls for one image, in a frame of their own: libpng reports an
+// error by a longjmp back to the setjmp here, and this frame writes none of
+// its variables after it, so none can be clobbered.
+bool libpng_write(const LibpngJob& job) {
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return false;
+    }
+    png_set_write_fn(png, job.out, png_append, nullptr);
+    png_set_compression_level(png, job.level);
+    png_set_compression_strategy(png, job.strategy);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, job.filters);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(job.width),
+                 static_cast<png_uint_32>(job.height), 8, job.type, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+    png_write_info(png, info);
+    for (int y = 0; y < job.height; ++y)
+        png_write_row(png,
+                      const_cast<png_bytep>(job.rows + static_cast<size_t>(y) * job.row_bytes));
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    return true;
+}
+
 // libpng writing `f` as colour type `type`; grey and RGB rows are first
 // packed to that type's channels (the first 1 or 3 of each pixel).
 std::string libpng_encode(const Frame& f, int level, int filters, int strategy = Z_FILTERED,
@@ -76,25 +110,16 @@ std::string libpng_encode(const Frame& f, int level, int filters, int strategy =
             for (size_t c = 0; c < channels; ++c) packed[i * channels + c] = f.rgba[4 * i + c];
     }
     std::string out;
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png_create_info_struct(png);
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        return {};
-    }
-    png_set_write_fn(png, &out, png_append, nullptr);
-    png_set_compression_level(png, level);
-    png_set_compression_strategy(png, strategy);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, filters);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(f.width), static_cast<png_uint_32>(f.height),
-                 8, type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
-    png_write_info(png, info);
-    for (int y = 0; y < f.height; ++y)
-        png_write_row(png, const_cast<png_bytep>((channels == 4 ? f.rgba.data() : packed.data()) +
-                                                 static_cast<size_t>(y) * f.width * channels));
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-    return out;
+    const LibpngJob job{channels == 4 ? f.rgba.data() : packed.data(),
+                        static_cast<size_t>(f.width) * channels,
+                        f.width,
+                        f.height,
+                        type,
+                        level,
+                        filters,
+                        strategy,
+                        &out};
+    return libpng_write(job) ? out : std::string();
 }
 
 // libspng's decoder, to 8-bit RGBA, top row first.

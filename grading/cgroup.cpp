@@ -83,7 +83,7 @@ namespace {
 // chroot beside its host) can share one hierarchy; the namespace's inode
 // number tells them apart on one kernel.
 std::string own_prefix() {
-    struct stat ns {};
+    struct stat ns = {};
     const unsigned long long inode =
         stat("/proc/self/ns/pid", &ns) == 0 ? static_cast<unsigned long long>(ns.st_ino) : 0;
     return "course-" + std::to_string(inode) + "-";

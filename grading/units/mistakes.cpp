@@ -60,10 +60,12 @@ bool same_structure(const json& a, const json& b) {
 }
 
 // Element `k` of a list result (-1: the whole value); nullopt when missing.
+// (std::in_place: json converts itself to any type, std::optional<json> too,
+// so a plain `return value;` is ambiguous to GCC 16.)
 std::optional<json> element(const json& value, int k) {
-    if (k < 0) return value;
+    if (k < 0) return std::optional<json>(std::in_place, value);
     if (!value.is_array() || static_cast<size_t>(k) >= value.size()) return std::nullopt;
-    return value[static_cast<size_t>(k)];
+    return std::optional<json>(std::in_place, value[static_cast<size_t>(k)]);
 }
 
 // The function on `args`, element `k`; nullopt when it throws (an argument

@@ -422,7 +422,7 @@ TEST_CASE("sandbox: course removes its own PID namespace's stale cgroups, never 
     // A PID never handed out (PIDs stay below pid_max): each name's course is gone.
     const std::string dead = fw::test::read_text("/proc/sys/kernel/pid_max").substr(0, 12);
     const std::string gone = std::to_string(std::stol(dead));
-    struct stat ns {};
+    struct stat ns = {};
     REQUIRE(stat("/proc/self/ns/pid", &ns) == 0);
     // This namespace's stale cgroup; another namespace's (whose PIDs mean
     // nothing here); and the name an older course in any namespace made.
