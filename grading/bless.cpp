@@ -103,12 +103,9 @@ int warm_cache_command(const WarmCacheOptions& options) {
         std::printf("warmed %s (%zu frames, %.2f s)\n", lab.id.c_str(), plan.renders.size(),
                     child.run.seconds);
     }
-    std::printf("shader cache in %s: %s\n", cache.dir.c_str(),
-                mib_text(directory_bytes(cache.dir)).c_str());
-    bool written = false;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(cache.dir, ec))
-        written = written || e.is_regular_file();
-    if (!written)
+    const std::uint64_t bytes = directory_bytes(cache.dir);
+    std::printf("shader cache in %s: %s\n", cache.dir.c_str(), mib_text(bytes).c_str());
+    if (bytes == 0)
         std::fprintf(stderr,
                      "course: warm-cache: warning: the driver wrote no shader cache into %s: it "
                      "keeps none that course can direct (Mesa's and NVIDIA's can be), so "

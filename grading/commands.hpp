@@ -26,7 +26,7 @@ struct GradeOptions {
     std::string results;
     bool progress = true;  // a line per lab as it finishes
     // --shader-cache: a shader cache made by `course warm-cache`; each
-    // lab's child starts from its own copy. Empty: Mesa's default.
+    // lab's child starts from its own copy. Empty: the driver's default.
     std::string shader_cache;
     // --sandbox: auto uses every layer the machine allows; strict refuses to
     // grade when namespaces or cgroups are missing.
