@@ -253,7 +253,14 @@ public:
             pollfd p{out_, POLLIN, 0};
             poll(&p, eof_ ? 0 : 1, 50);  // after EOF: just wait
             read_output();
-            if (!exited_ && waitpid(pid_, &wait_status_, WNOHANG) == pid_) {
+            const pid_t waited = exited_ ? 0 : waitpid(pid_, &wait_status_, WNOHANG);
+            if (waited < 0 && errno == ECHILD) {
+                // Reaped by someone else: its end is unknown, and waiting
+                // on would never end.
+                exited_ = true;
+                stop("ended unseen: course lost its exit status (a bug in course, not the lab)");
+                drain_until_ = elapsed() + 0.5;
+            } else if (waited == pid_) {
                 exited_ = true;
                 killpg(pid_, SIGKILL);  // anything it started and left running
                 // What is still in the pipe, unless something holds it open.
@@ -352,10 +359,9 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     start.devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
     start.out = fds[1];
     const auto started = ChildWatch::Clock::now();
-    const pid_t pid = fork();
+    const pid_t pid = fork_lab();
     if (pid < 0) throw fw::Error(std::string("cannot fork the lab child: ") + std::strerror(errno));
     if (pid == 0) exec_child(start);
-    lab_started(pid);
     setpgid(pid, pid);  // also here, so that killpg works before the child gets to it
     close(fds[1]);
     if (start.devnull >= 0) close(start.devnull);

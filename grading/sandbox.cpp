@@ -163,9 +163,11 @@ std::vector<std::string> SeccompFilter::denied() {
 
 bool become_subreaper() { return prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0) == 0; }
 
-void lab_started(pid_t pid) {
+pid_t fork_lab() {
     std::lock_guard<std::mutex> lock(g_labs_mutex);
-    g_labs.insert(pid);
+    const pid_t pid = fork();
+    if (pid > 0) g_labs.insert(pid);
+    return pid;
 }
 
 void lab_ended(pid_t pid) {
@@ -179,35 +181,34 @@ int kill_strays(const RunAsUser* user) {
     // A killed process's children come to course in turn: go round until
     // nothing is left (a bounded number of times).
     for (int round = 0; round < 50; ++round) {
-        std::set<pid_t> running;
-        {
-            std::lock_guard<std::mutex> lock(g_labs_mutex);
-            running = g_labs;
-        }
-        const std::vector<ProcInfo> all = processes();
-        std::map<pid_t, pid_t> parent;
-        for (const ProcInfo& p : all) parent[p.pid] = p.ppid;
-        // Whether `pid` descends from a lab that is still running.
-        auto in_running_lab = [&](pid_t pid) {
-            for (int depth = 0; pid > 1 && depth < 4096; ++depth) {
-                if (running.count(pid)) return true;
-                auto up = parent.find(pid);
-                if (up == parent.end()) return false;
-                pid = up->second;
-            }
-            return false;
-        };
         std::vector<pid_t> strays;
-        for (const ProcInfo& p : all) {
-            if (p.pid == self || in_running_lab(p.pid)) continue;
-            const bool adopted = p.ppid == self && !running.count(p.pid);
-            const bool users = user && p.uid == user->uid;
-            if (adopted || users) strays.push_back(p.pid);
+        {
+            // Held from reading the processes to killing the strays: no lab
+            // starts in between (fork_lab), so none is taken for a stray.
+            std::lock_guard<std::mutex> lock(g_labs_mutex);
+            const std::vector<ProcInfo> all = processes();
+            std::map<pid_t, pid_t> parent;
+            for (const ProcInfo& p : all) parent[p.pid] = p.ppid;
+            // Whether `pid` descends from a lab that is still running.
+            auto in_running_lab = [&](pid_t pid) {
+                for (int depth = 0; pid > 1 && depth < 4096; ++depth) {
+                    if (g_labs.count(pid)) return true;
+                    auto up = parent.find(pid);
+                    if (up == parent.end()) return false;
+                    pid = up->second;
+                }
+                return false;
+            };
+            for (const ProcInfo& p : all) {
+                if (p.pid == self || in_running_lab(p.pid)) continue;
+                const bool adopted = p.ppid == self;
+                const bool users = user && p.uid == user->uid;
+                if (adopted || users) strays.push_back(p.pid);
+            }
+            for (pid_t pid : strays)
+                if (kill(pid, SIGKILL) == 0) ++killed;
         }
         if (strays.empty()) return killed;
-        for (pid_t pid : strays) {
-            if (kill(pid, SIGKILL) == 0) ++killed;
-        }
         // Reap the ones that were course's own; the others' parents do.
         for (pid_t pid : strays) waitpid(pid, nullptr, WNOHANG);
         std::this_thread::sleep_for(std::chrono::milliseconds(20));

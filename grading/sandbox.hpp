@@ -45,7 +45,10 @@ private:
 bool become_subreaper();
 
 // The lab children now running, so that strays can be told from them.
-void lab_started(pid_t pid);
+// fork_lab() forks (returning as fork() does) and, in the parent, counts the
+// child as running in the same step: under --jobs a kill_strays() in another
+// thread can never see the new child before it counts, and kill it as a stray.
+pid_t fork_lab();
 void lab_ended(pid_t pid);
 
 // Kills and reaps every process that no running lab started: course's
