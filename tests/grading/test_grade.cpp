@@ -76,6 +76,32 @@ TEST_CASE("course grade --jobs 2 gives the same results as --jobs 1") {
     CHECK(one.results["score"] == two.results["score"]);
 }
 
+TEST_CASE("course warm-cache: a warning when the driver wrote no cache, none when it did") {
+    // A lab child that compiles nothing leaves the cache empty: said on
+    // stderr, since --shader-cache would then spare nothing.
+    const std::string empty = fw::test::out_dir() + "/cache-empty";
+    fs::remove_all(empty);
+    fw::test::CommandResult r =
+        fw::test::run_command("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=quick " + course() +
+                              " warm-cache " + empty + " pipeline --lab " + fake_lab());
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    fw::test::check_mentions(
+        r.output, {"warmed pipeline", "warning: the driver wrote no shader cache into " + empty});
+
+    // The real lab's shaders fill it, and nothing is said.
+    const std::string filled = fw::test::out_dir() + "/cache-filled";
+    fs::remove_all(filled);
+    r = fw::test::run_command(course() + " warm-cache " + filled + " pipeline");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    fw::test::check_mentions(r.output, {"warmed pipeline", "shader cache in " + filled});
+    CHECK(r.output.find("wrote no shader cache") == std::string::npos);
+    int files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(filled)) files += e.is_regular_file();
+    CHECK(files > 0);
+}
+
 TEST_CASE("course grade: usage and set-up errors exit 2 and say what would fix them") {
     const std::string out = fw::test::out_dir() + "/report";
     Graded g = grade("", "nosuch", out);
