@@ -4,7 +4,6 @@
 // moment is a running lab, never a stray. Real processes, no GL.
 #include <unistd.h>
 
-#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -21,13 +20,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The children's work directory (run_child sizes it while they run): empty.
+std::string work_dir() {
+    const std::string dir = fw::test::out_dir() + "/children-work";
+    fs::create_directories(dir);
+    return dir;
+}
+
 // Runs `count` children of `argv` in each of `threads` threads at once, and
 // counts every status but "ok" (with one log for the report).
 std::map<std::string, int> run_side_by_side(const std::vector<std::string>& argv, int threads,
                                             int count, std::string& a_log) {
-    // Their work directory (run_child sizes it while they run): empty.
-    const std::string dir = fw::test::out_dir() + "/children-work";
-    fs::create_directories(dir);
+    const std::string dir = work_dir();
     std::map<std::string, int> statuses;
     std::mutex mutex;
     std::vector<std::thread> workers;
@@ -68,11 +72,9 @@ TEST_CASE("children: what a child leaves running is still killed when it ends") 
     std::remove(mark.c_str());
     grading::ChildLimits limits;
     limits.timeout_seconds = 30;
-    const std::string dir = fw::test::out_dir() + "/children-work";
-    fs::create_directories(dir);
     const grading::ChildRun run = grading::run_child(
-        {"/bin/sh", "-c", "setsid sh -c 'sleep 1; touch " + mark + "' >/dev/null 2>&1 &"}, dir,
-        limits, nullptr);
+        {"/bin/sh", "-c", "setsid sh -c 'sleep 1; touch " + mark + "' >/dev/null 2>&1 &"},
+        work_dir(), limits, nullptr);
     CHECK(run.ok());
     CHECK(run.log.find("process(es) the lab left running") != std::string::npos);
     MESSAGE(run.log);
