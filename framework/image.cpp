@@ -298,10 +298,11 @@ void write_pfm(const std::string& path, const DepthImage& img) {
     if (!out) throw Error("cannot write PFM '" + path + "': write failed (disk full?)");
 }
 
-DepthImage read_pfm(const std::string& path) {
-    std::string bytes = read_file(path, "PFM");
+DepthImage read_pfm(const std::string& path) { return decode_pfm(read_file(path, "PFM"), path); }
+
+DepthImage decode_pfm(std::string bytes, const std::string& name) {
     auto fail = [&](const std::string& why) {
-        return Error("cannot read PFM '" + path + "': " + why);
+        return Error("cannot read PFM '" + name + "': " + why);
     };
     if (bytes.compare(0, 2, "PF") == 0)
         throw fail("it is a colour (PF) file; only single-channel depth (Pf) is supported");

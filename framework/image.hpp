@@ -83,6 +83,8 @@ bool pam_header_size(const std::string& bytes, int& width, int& height);
 // (the sign of the scale) and rejects colour ("PF") files with a clear error.
 void write_pfm(const std::string& path, const DepthImage& img);
 DepthImage read_pfm(const std::string& path);
+// The same from bytes already read; `name` is for messages.
+DepthImage decode_pfm(std::string bytes, const std::string& name);
 
 // docs/contract.md, Checks, `image`: a pixel of `actual` passes when some pixel of
 // `expected` in its (2r+1)x(2r+1) neighbourhood (r = `radius`, default 1: 3x3)

@@ -6,16 +6,44 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <functional>
+#include <initializer_list>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "framework/error.hpp"
-#include "grading/commands.hpp"
-#include "grading/gradescope.hpp"
+#include "grading/commands/commands.hpp"
+#include "grading/platforms/autograder.hpp"
+#include "grading/release/release.hpp"
 
 namespace {
 
 const char* const kBackendHelp =
     "auto|osmesa|egl (default $LAB_BACKEND, else auto: EGL, then OSMesa)";
+
+// The names of a typed option's values, as the command line spells them.
+template <class E>
+using Choices = std::initializer_list<std::pair<const char*, E>>;
+const Choices<grading::ResultsFormat> kPlatforms = {
+    {"gradescope", grading::ResultsFormat::Gradescope},
+    {"prairielearn", grading::ResultsFormat::PrairieLearn}};
+const Choices<grading::GradeOptions::Sandbox> kSandboxes = {
+    {"auto", grading::GradeOptions::Sandbox::Auto},
+    {"strict", grading::GradeOptions::Sandbox::Strict}};
+
+// An option whose value is one of `choices`, stored as its enum value; any
+// other value is a usage error listing the names.
+template <class E>
+CLI::Option* add_choice(CLI::App* app, const std::string& name, E& target, Choices<E> choices,
+                        const std::string& help) {
+    std::vector<std::string> names;
+    for (const auto& c : choices) names.push_back(c.first);
+    const auto store = [&target, choices](const std::string& value) {
+        for (const auto& c : choices)
+            if (value == c.first) target = c.second;
+    };
+    return app->add_option_function<std::string>(name, store, help)->check(CLI::IsMember(names));
+}
 
 // A subcommand and what runs it once its options are parsed.
 struct Command {
@@ -34,16 +62,14 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     grade->add_option("--timeout", g.timeout_seconds, "Seconds per lab (default 60)")
         ->check(CLI::Range(1.0, 3600.0));
     grade->add_option("--run-as", g.run_as, "Run the child as this user (when root)");
-    grade->add_option("--format", g.format, "What results.json holds (default gradescope)")
-        ->check(CLI::IsMember({"gradescope", "prairielearn"}));
+    add_choice(grade, "--format", g.format, kPlatforms,
+               "What results.json holds (default gradescope)");
     grade->add_option("--results", g.results, "Write results.json here (default: into --out)");
     grade->add_option("--shader-cache", g.shader_cache,
                       "Start each lab from a copy of this shader cache (course warm-cache)");
-    grade
-        ->add_option("--sandbox", g.sandbox,
-                     "auto: every sandbox layer the machine allows; strict: refuse to grade "
-                     "without namespaces and cgroups (default auto)")
-        ->check(CLI::IsMember({"auto", "strict"}));
+    add_choice(grade, "--sandbox", g.sandbox, kSandboxes,
+               "auto: every sandbox layer the machine allows; strict: refuse to grade "
+               "without namespaces and cgroups (default auto)");
     grade
         ->add_option("--memory", g.memory_mib,
                      "MiB of memory per lab, where a cgroup enforces it (default 2048)")
@@ -89,8 +115,8 @@ Command add_prairielearn(CLI::App& app, std::string& out) {
     return {prairielearn, [&out] { return grading::prairielearn_command(out); }};
 }
 
-// Hidden: the autograders' scripts (run_autograder in grading/gradescope/,
-// grade.sh in grading/prairielearn/) run it for each submission. The timeout
+// Hidden: the autograders' scripts (run_autograder in grading/platforms/gradescope/,
+// grade.sh in grading/platforms/prairielearn/) run it for each submission. The timeout
 // is passed on to `course grade` as given, so that a value grade refuses
 // fails the grading with grade's own message.
 Command add_autograde(CLI::App& app, grading::AutogradeOptions& a) {
@@ -98,8 +124,8 @@ Command add_autograde(CLI::App& app, grading::AutogradeOptions& a) {
         "autograde", "Grade a submission and write results/results.json under --root");
     autograde->group("");
     autograde->add_option("LAB", a.labs, "Labs to grade (default: all)");
-    autograde->add_option("--layout", a.layout, "gradescope or prairielearn (gradescope)")
-        ->check(CLI::IsMember({"gradescope", "prairielearn"}));
+    add_choice(autograde, "--layout", a.layout, kPlatforms,
+               "gradescope or prairielearn (gradescope)");
     autograde->add_option("--root", a.root,
                           "gradescope: holds source/, submission/, results/ (/autograder); "
                           "prairielearn: holds student/, results/ (/grade)");

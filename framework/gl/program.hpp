@@ -1,8 +1,9 @@
 // fw::Program: linked shader stages plus checked uniform setters.
 //
-//   auto prog = fw::Program::from_files({"00_pipeline/pipeline.vert",
-//   "00_pipeline/pipeline.frag"}); prog.set("u_mvp", mvp);     // throws if pipeline.* has no
-//   active mat4 u_mvp prog.use();
+//   fw::Program prog = fw::Program::from_files({"00_pipeline/pipeline.vert",
+//                                                "00_pipeline/pipeline.frag"});
+//   prog.set("u_mvp", mvp);  // throws fw::Error unless the program has an active mat4 u_mvp
+//   prog.use();              // glUseProgram(prog.id()), before the draw call
 //
 // Uniforms are set with glProgramUniform*, so set() works whether or not the
 // program is in use. Each active uniform's location, type and array size is

@@ -94,7 +94,3 @@ private:
 std::string display_path(const std::string& path);
 
 }  // namespace fw
-
-// Programs (linked stages, uniforms) are declared in program.hpp; including
-// shader.hpp gives both.
-#include "framework/gl/program.hpp"  // IWYU pragma: export

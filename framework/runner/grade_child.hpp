@@ -8,7 +8,8 @@
 //    "units":   [{"id": "u0", "function": "translate", "args": [[1, 2, 3]]}]}
 //
 // DIR afterwards:
-//   NAME.png, NAME.pfm, NAME.stats.json   per render (NAME.error.txt instead on failure)
+//   NAME.pam, NAME.stats.json             per render (NAME.error.txt instead on failure)
+//   NAME.pfm                              per render whose entry has "depth": true
 //   units.json                            {"u0": {"result": ...} | {"error": "..."}}
 //   child.json                            written last: {"complete": true, "context": {...}}
 #pragma once

@@ -16,7 +16,7 @@
 
 #include "framework/checkpoints.hpp"
 #include "framework/text.hpp"
-#include "grading/release.hpp"
+#include "grading/release/release.hpp"
 #include "tests/grading/grade_support.hpp"
 #include "tests/support/test_support.hpp"
 

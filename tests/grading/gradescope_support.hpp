@@ -1,6 +1,6 @@
 // The end-to-end autograder of the gradescope tests (test_gradescope*.cpp):
 // `course gradescope` writes the folder, set up as Gradescope would
-// (grading/gradescope/setup.sh, without apt) in a fake /autograder and built
+// (grading/platforms/gradescope/setup.sh, without apt) in a fake /autograder and built
 // once for every test case of the executable; submit() then runs
 // run_autograder on a submission, and the checks compare its results.json
 // with what the data files promise.

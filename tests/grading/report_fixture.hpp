@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "framework/image.hpp"
-#include "grading/reports.hpp"
+#include "grading/report/reports.hpp"
 #include "tests/support/browser.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -23,8 +23,12 @@ inline grading::CheckResult check(const std::string& lab, const std::string& che
                                   double max_score, bool passed, const std::string& output,
                                   const std::string& visibility = "visible") {
     grading::CheckResult c;
-    c.lab = lab, c.checkpoint = checkpoint, c.kind = kind, c.title = title;
-    c.visibility = visibility, c.score = score, c.max_score = max_score, c.passed = passed;
+    c.lab = lab, c.checkpoint = checkpoint, c.title = title;
+    for (grading::CheckKind k : {grading::CheckKind::Image, grading::CheckKind::Probe,
+                                 grading::CheckKind::Stat, grading::CheckKind::Unit})
+        if (kind == grading::name_of(k)) c.kind = k;
+    c.visibility = grading::visibility_named(visibility);
+    c.score = score, c.max_score = max_score, c.passed = passed;
     c.output = output;
     return c;
 }
@@ -49,7 +53,7 @@ inline std::vector<std::string> write_triangle_pngs(const std::string& dir) {
 inline grading::LabResult crashed_transforms() {
     grading::LabResult transforms;
     transforms.lab = "01_transforms";
-    transforms.status = kCrash;
+    transforms.status = grading::LabStatus::failed(kCrash);
     transforms.log = "Segmentation fault <core dumped> & more";
     transforms.seconds = 0.4;
     grading::CheckResult rotate = check("01_transforms", "rotate", "image", "image vs reference", 0,

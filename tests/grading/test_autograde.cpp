@@ -32,7 +32,8 @@ struct Outcome {
 };
 
 Outcome run_autograder(const fs::path& root, const std::string& env = "") {
-    const std::string shim = fw::test::source_dir() + "/grading/gradescope/run_autograder";
+    const std::string shim =
+        fw::test::source_dir() + "/grading/platforms/gradescope/run_autograder";
     const auto r = fw::test::run_command(
         "env -u LAB_ROOT -u LAB_SHADER_DIR AUTOGRADER_ROOT=" + shell_quote(root.string()) +
         " AUTOGRADER_USER=no-such-user-of-the-autograde-test " + env + " bash " +

@@ -1,4 +1,4 @@
-// Lab children run side by side (grading/child.hpp, sandbox.hpp), as under
+// Lab children run side by side (grading/run/child.hpp, sandbox.hpp), as under
 // `course grade --jobs 2`: after each child, run_child() kills whatever no
 // running lab started; a child that another thread is starting at that
 // moment is a running lab, never a stray. Real processes, no GL.
@@ -12,8 +12,8 @@
 #include <thread>
 #include <vector>
 
-#include "grading/child.hpp"
-#include "grading/sandbox.hpp"
+#include "grading/run/child.hpp"
+#include "grading/sandbox/sandbox.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
@@ -43,7 +43,7 @@ std::map<std::string, int> run_side_by_side(const std::vector<std::string>& argv
                 const grading::ChildRun run = grading::run_child(argv, dir, limits, nullptr);
                 if (run.ok()) continue;
                 std::lock_guard<std::mutex> lock(mutex);
-                ++statuses[run.status];
+                ++statuses[run.status.text()];
                 a_log = run.log;
             }
         });

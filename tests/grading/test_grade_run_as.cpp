@@ -94,7 +94,7 @@ TEST_CASE("course grade --run-as nobody --shader-cache: each lab gets its own wr
     INFO(warm.output);
     REQUIRE(warm.exit_code == 0);
     fw::test::check_mentions(warm.output, {"warmed pipeline", "shader cache in " + cache});
-    chmod(cache.c_str(), 0700);  // root's, as grading/gradescope/setup.sh leaves it
+    chmod(cache.c_str(), 0700);  // root's, as grading/platforms/gradescope/setup.sh leaves it
     int seeded = 0;
     for (const auto& e : fs::recursive_directory_iterator(cache)) seeded += e.is_regular_file();
     REQUIRE(seeded > 0);

@@ -129,7 +129,7 @@ TEST_CASE("gradescope: submitted code can neither read references nor write resu
                              "#include <fcntl.h>\n#include <unistd.h>\n#include <cerrno>\n"
                              "#include <cstdio>\n#include <cstring>\n"));
     // The lingering process would try again 11 s later: the sandbox kills it
-    // when its lab ends (grading/sandbox.hpp), so it never gets there.
+    // when its lab ends (grading/sandbox/sandbox.hpp), so it never gets there.
     std::this_thread::sleep_for(std::chrono::seconds(12));
     const std::string log = read_text(report);
     MESSAGE("what the submission managed:\n" << log);

@@ -22,7 +22,7 @@
 
 #include "framework/checkpoints.hpp"
 #include "framework/text.hpp"
-#include "grading/release.hpp"
+#include "grading/release/release.hpp"
 #include "tests/grading/gradescope_support.hpp"
 #include "tests/grading/prairielearn_support.hpp"
 #include "tests/support/test_support.hpp"
@@ -171,8 +171,10 @@ TEST_CASE("prairielearn: the image holds the student version; serverFilesCourse 
     const std::string dockerfile = read_text(g.out / "image" / "Dockerfile");
     CHECK(dockerfile.find("\nFROM debian:") != std::string::npos);
     CHECK(dockerfile.find("RUN bash /course/setup.sh") != std::string::npos);
-    CHECK(read_text(g.course / "setup.sh") == read_text(repo / "grading/gradescope/setup.sh"));
-    CHECK(read_text(g.data / "grade.sh") == read_text(repo / "grading/prairielearn/grade.sh"));
+    CHECK(read_text(g.course / "setup.sh") ==
+          read_text(repo / "grading/platforms/gradescope/setup.sh"));
+    CHECK(read_text(g.data / "grade.sh") ==
+          read_text(repo / "grading/platforms/prairielearn/grade.sh"));
     CHECK((fs::status(g.data / "grade.sh").permissions() & fs::perms::owner_exec) !=
           fs::perms::none);
     // No solution in the image: its student files are the student versions.

@@ -27,7 +27,7 @@ using nlohmann::json;
 fs::path make_grade_root(const std::string& name, const std::string& lab_script) {
     const fs::path root = gradescope_test::make_root("prairielearn-" + name, lab_script);
     fs::rename(root / "submission", root / "student");
-    fs::copy_file(fs::path(fw::test::source_dir()) / "grading/prairielearn/grade.sh",
+    fs::copy_file(fs::path(fw::test::source_dir()) / "grading/platforms/prairielearn/grade.sh",
                   root / "source/grade.sh");
     return root;
 }

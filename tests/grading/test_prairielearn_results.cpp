@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "framework/image.hpp"
-#include "grading/by_checkpoint.hpp"
-#include "grading/prairielearn.hpp"
-#include "grading/reports.hpp"
+#include "grading/report/by_checkpoint.hpp"
+#include "grading/report/prairielearn_results.hpp"
+#include "grading/report/reports.hpp"
 #include "tests/grading/prairielearn_support.hpp"
 #include "tests/grading/report_fixture.hpp"
 #include "tests/support/test_support.hpp"

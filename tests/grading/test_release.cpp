@@ -1,4 +1,4 @@
-// `course release`, the text transformations (grading/release.hpp) and a
+// `course release`, the text transformations (grading/release/release.hpp) and a
 // small tree written by release_tree(). No GL, no git: fast.
 #include <sys/stat.h>
 
@@ -6,16 +6,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "grading/commands.hpp"
-#include "grading/release.hpp"
+#include "grading/release/release.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace fs = std::filesystem;
 using fw::test::check_mentions;
 using fw::test::thrown;
-
-// release_command() names the tree it releases; the tests here pass trees explicitly.
-std::string grading::source_root() { return fw::test::source_dir(); }
 
 namespace {
 

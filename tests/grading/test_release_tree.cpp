@@ -17,7 +17,7 @@
 
 #include "framework/checkpoints.hpp"
 #include "framework/text.hpp"
-#include "grading/release.hpp"
+#include "grading/release/release.hpp"
 #include "tests/grading/grade_support.hpp"
 #include "tests/grading/tree_support.hpp"
 #include "tests/support/test_support.hpp"

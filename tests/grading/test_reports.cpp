@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "framework/image.hpp"
-#include "grading/by_checkpoint.hpp"
-#include "grading/image_words.hpp"
-#include "grading/report_text.hpp"
-#include "grading/reports.hpp"
+#include "grading/judge/image_words.hpp"
+#include "grading/report/by_checkpoint.hpp"
+#include "grading/report/report_text.hpp"
+#include "grading/report/reports.hpp"
 #include "tests/grading/report_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -72,7 +72,7 @@ struct Fixture {
                                         0, 2, false, kProbeOutput));
         CheckResult hidden = check("00_pipeline", "secret", "unit", "unit rotate(v, <angle>)", 3, 3,
                                    true, "32 inputs within 1e-5");
-        hidden.visibility = "hidden";
+        hidden.visibility = grading::Visibility::Hidden;
         pipeline.checks.push_back(hidden);
 
         LabResult transforms = crashed_transforms();
@@ -413,16 +413,11 @@ TEST_CASE("a report that cannot be written is an error naming it") {
                              {file, "--out"});
 }
 
-TEST_CASE("a check whose visibility is neither visible nor hidden is an error") {
-    GradeRun run;
-    run.labs.resize(1);
-    run.labs[0].lab = "00_pipeline";
-    run.labs[0].checks.push_back(
-        check("00_pipeline", "triangle", "probe", "probe", 1, 1, true, ""));
-    run.labs[0].checks[0].visibility = "secret";
-    fw::test::check_mentions(
-        fw::test::thrown([&] { grading::write_reports(run, fw::test::out_dir()); }),
-        {"00_pipeline/triangle", "\"secret\"", "visible or hidden"});
+TEST_CASE("a visibility is visible or hidden; any other name is an error") {
+    CHECK(grading::visibility_named("visible") == grading::Visibility::Visible);
+    CHECK(grading::visibility_named("hidden") == grading::Visibility::Hidden);
+    fw::test::check_mentions(fw::test::thrown([] { grading::visibility_named("secret"); }),
+                             {"\"secret\"", "visible or hidden"});
 }
 
 TEST_CASE("text from a child is cleaned for XML, HTML and JSON") {

@@ -1,4 +1,4 @@
-// The sandbox around each lab's child (grading/sandbox.hpp, isolation.hpp),
+// The sandbox around each lab's child (grading/sandbox/sandbox.hpp, isolation.hpp),
 // attacked by real submissions (tests/grading/fake_lab.cpp), each graded
 // beside an honest lab, under two profiles:
 //   - privileged: course as root with CAP_SYS_ADMIN, as on a staff machine

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "framework/json_glm.hpp"
-#include "grading/judge_unit.hpp"
+#include "grading/judge/judge_unit.hpp"
 #include "grading/units/mistakes.hpp"
 #include "grading/units/reference.hpp"
 #include "tests/support/test_support.hpp"
@@ -180,8 +180,10 @@ std::string judge(const std::string& lab, const std::string& function, double to
     data.id = lab;
     grading::CheckResult r;
     r.max_score = 1;
-    grading::judge_unit(data, {{"function", function}, {"tolerance", tolerance}}, plan, 42, &units,
-                        "", r);
+    grading::UnitCheck check;
+    check.function = function;
+    check.tolerance = tolerance;
+    grading::judge_unit(data, check, plan, 42, &units, "", r);
     if (passed) *passed = r.passed;
     return r.output;
 }

@@ -6,12 +6,7 @@
 #include <thread>
 
 #include "framework/text.hpp"
-#include "grading/commands.hpp"
 #include "tests/grading/grade_support.hpp"
-
-// The grading sources these tests link name the repository through
-// source_root(); the tests pass their trees explicitly.
-std::string grading::source_root() { return fw::test::source_dir(); }
 
 namespace tree_test {
 

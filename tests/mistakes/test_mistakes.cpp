@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "framework/text.hpp"
-#include "grading/release.hpp"
+#include "grading/release/release.hpp"
 #include "tests/grading/tree_support.hpp"
 #include "tests/mistakes/mistakes.hpp"
 #include "tests/support/test_support.hpp"

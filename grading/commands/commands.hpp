@@ -1,0 +1,55 @@
+// The `course` subcommands (docs/contract.md, `course`). Each returns the process exit
+// status: 0 success (for grade: every check passed), 1 a check failed,
+// 2 a usage or set-up error.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grading/report/reports.hpp"
+
+namespace grading {
+
+struct GradeOptions {
+    std::vector<std::string> labs;  // empty: every lab with a labs/NN_name/checkpoints.json
+    std::string lab_binary;         // --lab PATH; default: `lab` beside `course`
+    std::string out = "build/grade";
+    std::string backend;  // empty: $LAB_BACKEND or auto, decided by the child
+    int jobs = 1;
+    double timeout_seconds = 60.0;
+    std::string run_as;  // --run-as USER (root only)
+    // --format: what results.json holds, gradescope or prairielearn; --results:
+    // where it goes (empty: into `out`).
+    ResultsFormat format = ResultsFormat::Gradescope;
+    std::string results;
+    bool progress = true;  // a line per lab as it finishes
+    // --shader-cache: a shader cache made by `course warm-cache`; each
+    // lab's child starts from its own copy. Empty: the driver's default.
+    std::string shader_cache;
+    // --sandbox: auto uses every layer the machine allows; strict refuses to
+    // grade when namespaces or cgroups are missing.
+    enum class Sandbox { Auto, Strict } sandbox = Sandbox::Auto;
+    // --memory: the cgroup's memory limit per lab, in MiB (where there is one).
+    int memory_mib = 2048;
+};
+int grade_command(const GradeOptions& options);
+
+struct BlessOptions {
+    std::vector<std::string> labs;  // empty: all
+    std::string lab_binary;
+    std::string backend;  // as for grade: empty is $LAB_BACKEND or auto (EGL, then OSMesa)
+};
+int bless_command(const BlessOptions& options);
+
+// `course warm-cache`: renders every graded frame of the labs through the
+// same children as grade, with Mesa's shader cache in `dir`, so that a later
+// `course grade --shader-cache DIR` starts warm.
+struct WarmCacheOptions {
+    std::vector<std::string> labs;  // empty: all
+    std::string lab_binary;
+    std::string backend;
+    std::string dir;
+};
+int warm_cache_command(const WarmCacheOptions& options);
+
+}  // namespace grading

@@ -1,0 +1,196 @@
+// `course grade` (docs/contract.md, `course grade`): one `lab grade-child` per lab, judged
+// by course from the child's raw outputs, then the reports.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <set>
+
+#include "framework/error.hpp"
+#include "framework/text.hpp"
+#include "grading/commands/commands.hpp"
+#include "grading/judge/checks.hpp"
+#include "grading/report/reports.hpp"
+#include "grading/run/parallel.hpp"
+#include "grading/sandbox/isolation.hpp"
+#include "grading/sandbox/sandbox.hpp"
+
+namespace grading {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+unsigned seed_from_env() {
+    const char* text = std::getenv("COURSE_SEED");
+    if (!text || !*text) return std::random_device{}();
+    char* end = nullptr;
+    const unsigned long v = std::strtoul(text, &end, 10);
+    if (*end != '\0' || v > 0xffffffffUL)
+        throw fw::UsageError("COURSE_SEED='" + std::string(text) +
+                             "' is not a number from 0 to 4294967295");
+    return static_cast<unsigned>(v);
+}
+
+void set_owner_mode(const std::string& path, mode_t mode) {
+    if (chown(path.c_str(), 0, 0) != 0 || chmod(path.c_str(), mode) != 0)
+        throw fw::Error("cannot make '" + path + "' root's with mode " + std::to_string(mode) +
+                        ": " + std::strerror(errno));
+}
+
+// The output directory and its per-lab image folders. With --run-as, the
+// child's user must neither read a reference nor write a result: course
+// makes every labs/*/reference folder (course's own tree) root's with mode
+// 0700, the output directory root's 0755 and the image folders, which hold
+// copies of references, 0700; then checks all that as the user.
+void prepare(const std::string& out, const std::vector<LabData>& all,
+             const std::vector<LabData>& graded, const std::string& lab_binary,
+             const RunAsUser* user) {
+    const bool created = !fs::exists(out);
+    fs::create_directories(out);
+    if (user && created) set_owner_mode(out, 0755);
+    for (const LabData& lab : graded) {
+        const std::string dir = out + "/" + lab.id;
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        if (user) set_owner_mode(dir, 0700);
+    }
+    if (!user) return;
+    for (const LabData& lab : all)
+        if (fs::exists(lab.reference_dir())) set_owner_mode(lab.reference_dir(), 0700);
+    auto deny = [&](const std::string& what) {
+        throw fw::UsageError("--run-as " + user->name + ": that user " + what);
+    };
+    if (user_can_access(*user, out, W_OK))
+        deny("could write the output directory '" + out + "'; choose an --out it cannot write");
+    for (const LabData& lab : all)
+        if (fs::exists(lab.reference_dir()) && user_can_access(*user, lab.reference_dir(), R_OK))
+            deny("could still read '" + lab.reference_dir() + "'");
+    if (!user_can_access(*user, lab_binary, X_OK))
+        deny("cannot run '" + lab_binary +
+             "'; put the build where that user can read and execute it");
+}
+
+std::string score_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// The line `course grade` prints as a lab finishes, with the tail of its log
+// when its child failed.
+void print_progress(const LabResult& result) {
+    const std::string score = score_text(result.score()) + "/" + score_text(result.max_score());
+    std::printf("%-16s %9s  %5.1f s  %s\n", result.lab.c_str(), score.c_str(), result.seconds,
+                result.status.text().c_str());
+    if (!result.status.ok()) std::printf("%s", indented_tail(result.log, 12).c_str());
+    std::fflush(stdout);
+}
+
+std::string backend_name(const GradeOptions& options) {
+    const char* env_backend = std::getenv("LAB_BACKEND");
+    return !options.backend.empty()      ? options.backend
+           : env_backend && *env_backend ? env_backend
+                                         : "auto";
+}
+
+}  // namespace
+
+int grade_command(const GradeOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const ResultsFile results{options.format, options.results};
+    const std::vector<LabData> all = discover_labs(source_root());
+    std::vector<LabData> labs = select_labs(all, options.labs);
+    for (LabData& lab : labs) parse_checks(lab);
+    const std::string lab_binary = resolve_lab_binary(options.lab_binary);
+    std::optional<RunAsUser> user;
+    if (!options.run_as.empty()) user = lookup_user(options.run_as);
+    const RunAsUser* as = user ? &*user : nullptr;
+    prepare(options.out, all, labs, lab_binary, as);
+
+    // Orphans of a lab's child (a setsid() daemon) come back to course.
+    if (!become_subreaper()) throw fw::Error("cannot make course a child subreaper (prctl)");
+    const unsigned seed = seed_from_env();
+    ChildLimits limits;
+    limits.timeout_seconds = options.timeout_seconds;
+    ShaderCache cache;
+    if (!options.shader_cache.empty()) {
+        if (!fs::is_directory(options.shader_cache))
+            throw fw::UsageError("--shader-cache " + options.shader_cache +
+                                 ": no such directory; make it with course warm-cache");
+        cache.dir = fs::absolute(options.shader_cache).string();
+    }
+
+    GradeRun run;
+    run.backend = backend_name(options);
+    // The privileged layers, where this machine allows them (isolation.hpp).
+    std::string namespaces_why, cgroups_why;
+    limits.namespaces = namespaces_usable(namespaces_why);
+    const std::unique_ptr<CgroupRoot> cgroups = CgroupRoot::open(cgroups_why);
+    limits.cgroups = cgroups.get();
+    limits.resident_cap = static_cast<std::uint64_t>(options.memory_mib) * kMiB;
+    run.sandbox = sandbox_layers(as, limits, namespaces_why, cgroups_why);
+    if (options.sandbox == GradeOptions::Sandbox::Strict) {
+        std::vector<std::string> missing;
+        for (const SandboxLayer& layer : run.sandbox)
+            if (!layer.active && layer.name != "--run-as")
+                missing.push_back(layer.name + ": " + layer.detail);
+        if (!missing.empty())
+            throw fw::EnvironmentError(
+                "--sandbox strict: not grading, because these layers of the sandbox cannot be "
+                "used here: " +
+                fw::join(missing, "; ") +
+                ". Run course as root with CAP_SYS_ADMIN and a cgroup hierarchy it may write, "
+                "or grade with --sandbox auto");
+    }
+    run.labs.resize(labs.size());
+    // --jobs workers take labs in order; each lab is one child.
+    std::mutex print_mutex;
+    // Labs between their plan and their verdict: those sharing the cores.
+    std::atomic<int> in_flight{0};
+    struct InFlight {
+        std::atomic<int>& count;
+        explicit InFlight(std::atomic<int>& c) : count(c) { ++count; }
+        ~InFlight() { --count; }
+        InFlight(const InFlight&) = delete;
+        InFlight& operator=(const InFlight&) = delete;
+    };
+    parallel_for(labs.size(), options.jobs, [&](size_t i) {
+        const InFlight flight(in_flight);
+        // Planned here, on the lab's worker, while other labs' children run:
+        // its unit checks' random arguments (seeded by the run's seed and the
+        // lab) are thousands of values.
+        const LabPlan plan = plan_lab(labs[i], seed, PlanFor::Grading);
+        LabChild child = run_lab_child(lab_binary, plan.job, options.backend, limits, as, cache);
+        LabResult& result = run.labs[i];
+        result.lab = labs[i].id;
+        result.status = child.run.status;
+        result.log = child.run.log;
+        result.seconds = child.run.seconds;
+        result.checks =
+            judge_lab(labs[i], plan, *child.outputs, options.out, judging_threads(in_flight));
+        if (child.run.ok()) {
+            const std::string shader_error = shader_error_status(*child.outputs);
+            if (!shader_error.empty()) result.status = LabStatus::failed(shader_error);
+        }
+        if (!options.progress) return;
+        std::lock_guard<std::mutex> lock(print_mutex);
+        print_progress(result);
+    });
+
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    write_reports(run, options.out, results);
+    std::printf("%s", summary_table(run).c_str());
+    return run.passed() ? 0 : 1;
+}
+
+}  // namespace grading

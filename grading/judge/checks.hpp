@@ -1,0 +1,142 @@
+// Checks (docs/contract.md, Checks): read from each lab's data file, validated before
+// any child runs, turned into the job a `lab grade-child` carries out, and
+// judged from its raw outputs by course alone.
+//
+// Check fields (every check: "kind", "points"; render checks may give
+// "size": [w, h], default 512 x 512, the same for all checks of a checkpoint):
+//   image  "tolerance" (0-255, default 8), "radius" (default 1: 3x3),
+//          "max_fail_fraction" (default 0.001), against reference/CHECKPOINT.png
+//   probe  "at": [x, y] window pixel (origin bottom-left) or "ndc": [x, y];
+//          "color": [r, g, b(, a)] in 0..1 with "tolerance" (default 0.01), or
+//          "depth": d in 0..1 with "tolerance" (default 1e-5)
+//   stat   "stat": a dotted path into the frame's stats ("lab_stats.total_bytes");
+//          "equals" (integers exactly; numbers within "tolerance" if given),
+//          or "min" and/or "max"
+//   unit   "function" (a reference in grading/units/), "random" (default 100)
+//          fresh argument lists, "edge": [[args...], ...], "tolerance"
+//          (default the reference's)
+#pragma once
+
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "framework/checkpoints.hpp"
+#include "framework/image.hpp"
+#include "grading/results/results.hpp"
+#include "grading/run/child.hpp"
+#include "grading/run/repository.hpp"
+
+namespace grading {
+
+// A check as checkpoints.json gives it, parsed once (parse_checks), each
+// default written here and nowhere else.
+struct ImageCheck {
+    int tolerance = 8;  // 0-255
+    int radius = 1;     // 1: a 3x3 neighbourhood
+    double max_fail_fraction = 0.001;
+};
+struct ProbeCheck {
+    std::optional<std::array<int, 2>> at;  // a window pixel, origin bottom-left; else "ndc"
+    std::array<double, 2> ndc{};
+    std::vector<double> color;  // r, g, b(, a) in 0..1; empty for a depth probe
+    double depth = 0.0;
+    double tolerance = 0.01;  // a colour's per channel; a depth probe's default is 1e-5
+    bool reads_depth() const { return color.empty(); }
+};
+constexpr double kColorTolerance = 0.01, kDepthTolerance = 1e-5;
+struct StatCheck {
+    std::string stat;  // a dotted path into the frame's stats
+    std::optional<nlohmann::json> equals;
+    std::optional<double> tolerance;  // only with a numeric "equals"
+    std::optional<double> min, max;
+};
+struct UnitCheck {
+    std::string function;
+    int random = 100;  // fresh argument lists
+    std::vector<nlohmann::json> edge;
+    std::optional<double> tolerance;  // default: the reference's
+};
+struct Check {
+    CheckKind kind = CheckKind::Image;
+    double points = 0.0;
+    std::variant<ImageCheck, ProbeCheck, StatCheck, UnitCheck> spec;
+    template <class T>
+    const T& as() const {
+        return std::get<T>(spec);
+    }
+    bool renders() const { return kind != CheckKind::Unit; }
+};
+
+// A lab as course sees it: its folder and data file, never its code.
+struct LabData {
+    std::string id;    // the data file's "lab", e.g. "pipeline"
+    std::string dir;   // its folder under labs/, e.g. "00_pipeline"
+    std::string root;  // the repository (source_root())
+    fw::CheckpointFile file;
+    // Each checkpoint's checks, parsed (parse_checks), in the file's order.
+    std::vector<std::vector<Check>> checks;
+
+    // "labs/00_pipeline/reference/NAME.png", relative to root (for messages).
+    std::string reference(const std::string& checkpoint) const;
+    std::string reference_dir() const;  // absolute
+};
+
+// Every labs/*/checkpoints.json under root, in folder order (labs.cpp).
+std::vector<LabData> discover_labs(const std::string& root);
+// The named labs, all when `names` is empty; throws fw::UsageError listing the labs.
+std::vector<LabData> select_labs(const std::vector<LabData>& all,
+                                 const std::vector<std::string>& names);
+
+// Parses every check of the lab into lab.checks; throws fw::UsageError
+// naming the file, the checkpoint, the check and the field.
+void parse_checks(LabData& lab);
+
+struct RenderPlan {
+    std::string checkpoint;
+    int width = 512, height = 512;
+};
+struct UnitCase {
+    std::string id;  // key in units.json
+    nlohmann::json args;
+    bool edge = false;
+};
+struct UnitPlan {
+    std::string checkpoint;
+    size_t check = 0;  // index in the checkpoint's checks
+    std::vector<UnitCase> cases;
+};
+// What one child is asked to do (job) and what course keeps to judge it.
+struct LabPlan {
+    nlohmann::json job;
+    std::vector<RenderPlan> renders;
+    std::vector<UnitPlan> units;
+    unsigned seed = 0;
+};
+enum class PlanFor {
+    Grading,   // every checkpoint with a render check, every unit check
+    Blessing,  // only checkpoints with an image check; no units
+};
+LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what);
+
+// NAME.pam as the child wrote it: a regular file within its size limit, a
+// PAM of the planned size; else false and why.
+bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Image& image,
+                   std::string& why);
+
+// "shader error in shaders/04_geometry/explode.geom" when the child reports
+// programs that failed to build (child.json's "shader_errors"); else empty.
+std::string shader_error_status(const ChildOutputs& outputs);
+
+// Every check of every checkpoint, from the child's raw outputs. Images for
+// the report go to out_dir/<lab>/<checkpoint>[.expected|.diff].png. The
+// checkpoints are judged on up to `threads` threads; the results come in the
+// checkpoints' order whatever the number.
+std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
+                                   const ChildOutputs& outputs, const std::string& out_dir,
+                                   int threads = 1);
+
+}  // namespace grading

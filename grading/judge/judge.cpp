@@ -1,0 +1,346 @@
+// Judging a lab's checks from what its child wrote. Only raw outputs count:
+// pixels, depth values, stats numbers and unit results; whatever else the
+// child claims (its stats' "params", extra fields) is ignored; child.json
+// gives only the status line of a lab whose programs failed to build.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "framework/text.hpp"
+#include "grading/judge/checks.hpp"
+#include "grading/judge/image_words.hpp"
+#include "grading/judge/judge_unit.hpp"
+#include "grading/run/parallel.hpp"
+
+namespace grading {
+
+namespace {
+
+using nlohmann::json;
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.7g", v);
+    return buf;
+}
+
+// JSON with numbers at float precision, cut to `max` characters.
+std::string compact(const json& j, size_t max = 240) {
+    std::string s;
+    if (j.is_array()) {
+        s = "[";
+        for (size_t i = 0; i < j.size() && s.size() <= max; ++i)
+            s += (i ? ", " : "") + compact(j[i], max);
+        s += "]";
+    } else {
+        s = j.is_number_float() ? num(j.get<double>()) : j.dump();
+    }
+    return s.size() > max ? s.substr(0, max) + "..." : s;
+}
+
+std::string tuple(const std::vector<double>& v) { return "(" + fw::join(v, ", ", num) + ")"; }
+
+// One checkpoint's frame, each output read once for all its checks.
+class Frame {
+public:
+    Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& out_dir,
+          const std::string& lab)
+        : outputs_(outputs), plan_(plan) {
+        has_color_ = read_rendered(outputs, plan, color_, color_why_);
+        if (has_color_) {
+            // The one PNG of the frame, for the reports (and written on the
+            // grading worker's thread, so --jobs spreads the encoding).
+            rendered_ = lab + "/" + plan.checkpoint + ".png";
+            fw::write_png(out_dir + "/" + rendered_, color_);
+        }
+    }
+    const std::string& rendered() const { return rendered_; }
+
+    const fw::Image* color(std::string& why) const {
+        why = "no image: " + color_why_;
+        return has_color_ ? &color_ : nullptr;
+    }
+
+    const fw::DepthImage* depth(std::string& why) {
+        if (!depth_) {
+            depth_.emplace();
+            const std::string name = plan_.checkpoint + ".pfm";
+            std::string bytes;
+            const std::uint64_t limit = std::uint64_t(plan_.width) * plan_.height * 4 + 1024;
+            if (!outputs_.read(name, limit, bytes, depth_why_)) {
+                depth_.reset();
+                depth_why_ = "no depth: " + depth_why_;
+                depth_failed_ = true;
+            } else {
+                try {
+                    // From the bytes read (and size-checked) above, never from
+                    // the file again (rendered.cpp says why).
+                    *depth_ = fw::decode_pfm(std::move(bytes), name);
+                    if (depth_->width != plan_.width || depth_->height != plan_.height)
+                        throw fw::Error(name + " is " + std::to_string(depth_->width) + "x" +
+                                        std::to_string(depth_->height) + ", not the frame's size");
+                } catch (const fw::Error& e) {
+                    depth_.reset();
+                    depth_why_ = "no depth: " + std::string(e.what());
+                    depth_failed_ = true;
+                }
+            }
+        }
+        why = depth_why_;
+        return depth_failed_ ? nullptr : &*depth_;
+    }
+
+    const json* stats(std::string& why) {
+        if (!stats_tried_) {
+            stats_tried_ = true;
+            const std::string name = plan_.checkpoint + ".stats.json";
+            std::string bytes;
+            if (!outputs_.read(name, 1 * kMiB, bytes, stats_why_)) {
+                stats_why_ = "no stats: " + stats_why_;
+            } else {
+                stats_ = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+                if (!stats_.is_object()) stats_why_ = "no stats: " + name + " is not a JSON object";
+            }
+        }
+        why = stats_why_;
+        return stats_.is_object() ? &stats_ : nullptr;
+    }
+
+private:
+    const ChildOutputs& outputs_;
+    RenderPlan plan_;
+    bool has_color_ = false;
+    fw::Image color_;
+    std::string color_why_, rendered_;
+    std::optional<fw::DepthImage> depth_;
+    bool depth_failed_ = false;
+    std::string depth_why_;
+    bool stats_tried_ = false;
+    json stats_;
+    std::string stats_why_;
+};
+
+void verdict(CheckResult& r, bool pass, const std::string& output) {
+    r.passed = pass;
+    r.score = pass ? r.max_score : 0.0;
+    r.output = output;
+}
+
+void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck& check,
+                 Frame& frame, const std::string& out_dir, CheckResult& r) {
+    r.title = "image vs reference";
+    fw::CompareOptions opt;
+    opt.tolerance = check.tolerance;
+    opt.radius = check.radius;
+    opt.max_failed_fraction = check.max_fail_fraction;
+    const int side = 2 * opt.radius + 1;
+    const std::string expected =
+        "Expected: " + lab.reference(cp.name) + "; a pixel passes when a reference pixel in its " +
+        std::to_string(side) + "x" + std::to_string(side) + " neighbourhood is within " +
+        std::to_string(opt.tolerance) + "/255 on every channel; at most " +
+        num(opt.max_failed_fraction * 100) + "% of pixels may fail\n";
+    std::string why;
+    const fw::Image* image = frame.color(why);
+    r.rendered = frame.rendered();
+    if (!image) return verdict(r, false, expected + "Observed: " + why);
+    const std::string ref_path = lab.root + "/" + lab.reference(cp.name);
+    if (!std::filesystem::exists(ref_path))
+        return verdict(r, false,
+                       "missing reference " + lab.reference(cp.name) + "; run course bless");
+    fw::Image reference;
+    try {
+        reference = fw::read_png(ref_path);
+    } catch (const fw::Error& e) {
+        return verdict(r, false, std::string(e.what()) + "; run course bless to write it again");
+    }
+    fw::CompareResult c = fw::compare_images(*image, reference, opt);
+    r.expected = lab.id + "/" + cp.name + ".expected.png";
+    // The reference is course's own file: copied, not encoded again.
+    std::error_code ec;
+    std::filesystem::copy_file(ref_path, out_dir + "/" + r.expected,
+                               std::filesystem::copy_options::overwrite_existing, ec);
+    if (ec) throw fw::Error("cannot copy " + ref_path + " into the report: " + ec.message());
+    if (!c.size_mismatch) {
+        r.difference = lab.id + "/" + cp.name + ".diff.png";
+        fw::write_png(out_dir + "/" + r.difference, c.difference);
+    }
+    std::string where = c.passed ? "" : describe_difference(*image, reference, c);
+    verdict(r, c.passed,
+            expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where));
+}
+
+void judge_probe(const ProbeCheck& check, const RenderPlan& plan, Frame& frame, CheckResult& r) {
+    int x, y;
+    std::string where;
+    if (check.at) {
+        x = (*check.at)[0];
+        y = (*check.at)[1];
+    } else {
+        // The pixel whose square holds the point: NDC -1..1 covers 0..width.
+        const double nx = check.ndc[0], ny = check.ndc[1];
+        x = std::min(plan.width - 1, static_cast<int>(std::floor((nx + 1) / 2 * plan.width)));
+        y = std::min(plan.height - 1, static_cast<int>(std::floor((ny + 1) / 2 * plan.height)));
+        where = " (NDC " + tuple({nx, ny}) + ")";
+    }
+    const std::string pixel = "(" + std::to_string(x) + ", " + std::to_string(y) + ")";
+    std::string why;
+    if (!check.reads_depth()) {
+        r.title = "probe " + pixel + " colour";
+        const std::vector<double>& expected = check.color;
+        const double tol = check.tolerance;
+        const std::string want = "Expected: colour " + tuple(expected) + " within " + num(tol) +
+                                 " per channel at pixel " + pixel + where + "\n";
+        const fw::Image* image = frame.color(why);
+        r.rendered = frame.rendered();
+        if (!image) return verdict(r, false, want + "Observed: " + why);
+        if (x >= image->width || y >= image->height)
+            return verdict(r, false, want + "Observed: outside the image");
+        const fw::Rgba8 p = image->at(x, y);
+        const double channels[4] = {p.r / 255.0, p.g / 255.0, p.b / 255.0, p.a / 255.0};
+        std::vector<double> seen(channels, channels + expected.size());
+        double worst = 0.0;
+        for (size_t i = 0; i < expected.size(); ++i)
+            worst = std::max(worst, std::fabs(seen[i] - expected[i]));
+        return verdict(r, worst <= tol,
+                       want + "Observed: " + tuple(seen) + ", largest difference " + num(worst));
+    }
+    r.title = "probe " + pixel + " depth";
+    const double expected = check.depth, tol = check.tolerance;
+    const std::string want = "Expected: depth " + num(expected) + " within " + num(tol) +
+                             " at pixel " + pixel + where + "\n";
+    const fw::DepthImage* depth = frame.depth(why);
+    if (!depth) return verdict(r, false, want + "Observed: " + why);
+    const double seen = depth->at(x, y);
+    verdict(
+        r, std::fabs(seen - expected) <= tol,
+        want + "Observed: depth " + num(seen) + ", difference " + num(std::fabs(seen - expected)));
+}
+
+void judge_stat(const StatCheck& check, Frame& frame, CheckResult& r) {
+    const std::string& path = check.stat;
+    std::string want;
+    if (check.equals) {
+        want = path + " == " + compact(*check.equals);
+        if (check.tolerance) want += " within " + num(*check.tolerance);
+    } else if (check.min && check.max) {
+        want = path + " in [" + num(*check.min) + ", " + num(*check.max) + "]";
+    } else {
+        want = path + (check.min ? " >= " + num(*check.min) : " <= " + num(*check.max));
+    }
+    r.title = "stat " + want;
+    want = "Expected: " + want + "\n";
+    std::string why;
+    const json* stats = frame.stats(why);
+    if (!stats) return verdict(r, false, want + "Observed: " + why);
+    const json* value = stats;
+    for (size_t start = 0; value && start <= path.size();) {
+        size_t dot = std::min(path.find('.', start), path.size());
+        const std::string key = path.substr(start, dot - start);
+        value = value->is_object() && value->contains(key) ? &(*value)[key] : nullptr;
+        start = dot + 1;
+    }
+    if (!value) return verdict(r, false, want + "Observed: the frame's stats have no " + path);
+    const std::string seen = "Observed: " + path + " = " + compact(*value);
+    if (check.equals) {
+        const json& e = *check.equals;
+        if (!e.is_number()) return verdict(r, *value == e, want + seen);
+        if (!value->is_number()) return verdict(r, false, want + seen + " (not a number)");
+        const double diff = std::fabs(value->get<double>() - e.get<double>());
+        return verdict(r, diff <= check.tolerance.value_or(0.0), want + seen);
+    }
+    if (!value->is_number()) return verdict(r, false, want + seen + " (not a number)");
+    const double v = value->get<double>();
+    const bool pass = (!check.min || v >= *check.min) && (!check.max || v <= *check.max);
+    verdict(r, pass, want + seen);
+}
+
+}  // namespace
+
+std::string shader_error_status(const ChildOutputs& outputs) {
+    std::string bytes, why;
+    if (!outputs.read("child.json", 256 * 1024, bytes, why)) return {};
+    const json child = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+    if (!child.is_object() || !child.contains("shader_errors") ||
+        !child["shader_errors"].is_array())
+        return {};
+    // The child's word, used only for this status line: never for a score.
+    std::vector<std::string> files;
+    for (const json& e : child["shader_errors"]) {
+        if (!e.is_object() || !e.contains("file") || !e["file"].is_string()) continue;
+        std::string file = e["file"];
+        if (file.size() > 200) file = file.substr(0, 200) + "...";
+        if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+    }
+    if (files.empty()) return {};
+    const size_t shown = std::min<size_t>(files.size(), 4);
+    std::string text =
+        "shader error in " +
+        fw::join(std::vector<std::string>(files.begin(), files.begin() + shown), ", ");
+    if (files.size() > shown) text += " and " + std::to_string(files.size() - shown) + " more";
+    return text;
+}
+
+std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
+                                   const ChildOutputs& outputs, const std::string& out_dir,
+                                   int threads) {
+    std::map<std::string, const RenderPlan*> renders;
+    for (const RenderPlan& r : plan.renders) renders[r.checkpoint] = &r;
+    std::string units_why;
+    json units;
+    if (!plan.units.empty()) {
+        std::string bytes;
+        if (outputs.read("units.json", 16 * kMiB, bytes, units_why)) {
+            units = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+            if (!units.is_object()) units_why = "units.json is not a JSON object";
+        }
+    }
+    // Each checkpoint's frame is decoded, compared and encoded for the
+    // report on its own: the checkpoints go to `threads` threads.
+    const std::vector<fw::Checkpoint>& checkpoints = lab.file.checkpoints;
+    std::vector<std::vector<CheckResult>> by_checkpoint(checkpoints.size());
+    parallel_for(checkpoints.size(), threads, [&](size_t k) {
+        const fw::Checkpoint& cp = checkpoints[k];
+        std::optional<Frame> frame;
+        auto r = renders.find(cp.name);
+        if (r != renders.end()) frame.emplace(outputs, *r->second, out_dir, lab.id);
+        const std::vector<Check>& checks = lab.checks.at(k);
+        for (size_t i = 0; i < checks.size(); ++i) {
+            const Check& check = checks[i];
+            CheckResult result;
+            result.lab = lab.id;
+            result.checkpoint = cp.name;
+            result.kind = check.kind;
+            result.visibility = visibility_named(cp.visibility);
+            result.max_score = check.points;
+            switch (check.kind) {
+                case CheckKind::Image:
+                    judge_image(lab, cp, check.as<ImageCheck>(), *frame, out_dir, result);
+                    break;
+                case CheckKind::Probe:
+                    judge_probe(check.as<ProbeCheck>(), *r->second, *frame, result);
+                    break;
+                case CheckKind::Stat:
+                    judge_stat(check.as<StatCheck>(), *frame, result);
+                    break;
+                case CheckKind::Unit:
+                    for (const UnitPlan& u : plan.units)
+                        if (u.checkpoint == cp.name && u.check == i)
+                            judge_unit(lab, check.as<UnitCheck>(), u, plan.seed,
+                                       units.is_object() ? &units : nullptr, units_why, result);
+                    break;
+            }
+            by_checkpoint[k].push_back(std::move(result));
+        }
+    });
+    std::vector<CheckResult> results;
+    for (std::vector<CheckResult>& checks : by_checkpoint)
+        for (CheckResult& c : checks) results.push_back(std::move(c));
+    return results;
+}
+
+}  // namespace grading

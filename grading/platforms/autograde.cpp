@@ -1,0 +1,376 @@
+// `course autograde` (gradescope.hpp): what Gradescope and PrairieLearn run
+// for each submission, through their shims (run_autograder, grade.sh), as
+// root. It puts the submitted files in place of those in the course's tree,
+// rebuilds `lab`, grades it with `course grade` and copies the results to
+// results/results.json. Whatever the submission does, it leaves a complete
+// results.json: for Gradescope, a submission that does not build, or a
+// grader that fails, scores 0 on every check with the reason in the output;
+// for PrairieLearn it is not gradable, with the reason.
+#include <fcntl.h>
+#include <pwd.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "grading/platforms/autograder.hpp"
+#include "grading/platforms/submitted_files.hpp"
+#include "grading/report/prairielearn_results.hpp"
+#include "grading/report/report_text.hpp"
+#include "grading/run/child.hpp"
+#include "grading/run/parallel.hpp"
+
+namespace fs = std::filesystem;
+
+namespace grading {
+
+namespace {
+
+// Where the paths of a layout are (gradescope.hpp, AutogradeOptions).
+struct Layout {
+    ResultsFormat format = ResultsFormat::Gradescope;
+    fs::path source;      // the course's tree, built; its student files are replaced
+    fs::path data;        // LAB_ROOT of `course grade`: checkpoints and references
+    fs::path submission;  // the submitted files
+    fs::path results;     // results.json goes here
+    std::string prefix;   // of the lines printed to the log
+};
+
+Layout resolve_layout(const AutogradeOptions& options) {
+    Layout l;
+    if (options.layout == ResultsFormat::PrairieLearn) {
+        const fs::path root = options.root.empty() ? "/grade" : options.root;
+        if (options.data.empty())
+            throw fw::UsageError(
+                "--layout prairielearn needs --data DIR: the checkpoints and references "
+                "(grade.sh passes its own folder in serverFilesCourse)");
+        l.format = ResultsFormat::PrairieLearn;
+        l.source = options.source.empty() ? "/course" : options.source;
+        l.data = options.data;
+        l.submission = root / "student";
+        l.results = root / "results";
+        l.prefix = "grade.sh: ";
+    } else {
+        const fs::path root = options.root.empty() ? "/autograder" : options.root;
+        if (!options.source.empty() || !options.data.empty())
+            throw fw::UsageError("--source and --data belong to --layout prairielearn");
+        l.source = root / "source";
+        l.data = l.source;
+        l.submission = root / "submission";
+        l.results = root / "results";
+        l.prefix = "run_autograder: ";
+    }
+    return l;
+}
+
+// The results.json written when not even the failed reports can be made.
+std::string fallback_json(const Layout& layout, const std::string& reason,
+                          const std::string& details) {
+    if (layout.format == ResultsFormat::PrairieLearn)
+        return prairielearn_not_gradable_json(reason, details);
+    return nlohmann::ordered_json{{"score", 0},
+                                  {"output", report::clean_text(reason + "\n\n" + details)}}
+               .dump(2) +
+           "\n";
+}
+
+// What the shell's $? says of a child: its exit status, or 128 + the signal.
+int shell_status(int wait_status) {
+    if (WIFEXITED(wait_status)) return WEXITSTATUS(wait_status);
+    if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
+    return 255;
+}
+
+// Writes all of `bytes` to `fd`; false when it cannot.
+bool write_all(int fd, const char* bytes, size_t size) {
+    while (size > 0) {
+        const ssize_t n = write(fd, bytes, size);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        bytes += n;
+        size -= static_cast<size_t>(n);
+    }
+    return true;
+}
+
+// Copies everything readable from `from` to `log` and to our stdout, like
+// tee: a log that cannot be written does not stop the copy to stdout.
+void tee(int from, int log) {
+    char buf[65536];
+    bool log_ok = true;
+    for (;;) {
+        const ssize_t n = read(from, buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return;
+        log_ok = log_ok && write_all(log, buf, static_cast<size_t>(n));
+        std::fwrite(buf, 1, static_cast<size_t>(n), stdout);
+        std::fflush(stdout);
+    }
+}
+
+// Runs `argv` (its first word looked up in PATH) with no stdin and its
+// stdout and stderr written to `log`, and also to our stdout when `echo`.
+// Returns its status as the shell would report it; 127 when it cannot start.
+int run_logged(const std::vector<std::string>& argv, const fs::path& log, bool echo) {
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    const int log_fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    const int devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
+    int fds[2] = {-1, -1};
+    if (log_fd < 0 || devnull < 0 || (echo && pipe2(fds, O_CLOEXEC) != 0))
+        throw fw::Error("cannot set up the log '" + log.string() + "': " + std::strerror(errno));
+    const int out = echo ? fds[1] : log_fd;
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (dup2(devnull, 0) >= 0 && dup2(out, 1) >= 0 && dup2(out, 2) >= 0)
+            execvp(args[0], args.data());
+        std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
+        _exit(127);
+    }
+    if (echo) close(fds[1]);
+    if (pid > 0 && echo) tee(fds[0], log_fd);
+    if (echo) close(fds[0]);
+    close(devnull);
+    close(log_fd);
+    if (pid < 0) throw fw::Error(std::string("cannot fork: ") + std::strerror(errno));
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    return shell_status(status);
+}
+
+class Autograder {
+public:
+    Autograder(const AutogradeOptions& options, const Layout& layout)
+        : options_(options),
+          layout_(layout),
+          source_(layout.source),
+          results_(layout.results),
+          lab_(source_ / "build" / "bin" / "lab"),
+          as_user_(geteuid() == 0 && getpwnam(options.user.c_str()) != nullptr) {}
+
+    void run() {
+        prepare_results();
+        try {
+            work_ = std::make_unique<WorkDir>(nullptr);
+        } catch (const fw::Error&) {
+            const char* tmp = std::getenv("TMPDIR");
+            const std::string where = tmp && *tmp ? tmp : "/tmp";
+            report::write_text_file(
+                (results_ / "results.json").string(),
+                fallback_json(layout_,
+                              "the autograder could not create a work directory in " + where,
+                              "please tell the course staff"));
+            return;
+        }
+        private_data();
+        if (timed("copying the submitted files", [this] { return place_submitted_files(); }) &&
+            timed("building lab", [this] { return build_lab(); }))
+            timed("grading", [this] {
+                grade();
+                return true;
+            });
+    }
+
+    // Runs one step and says in the log how long it took (the figures of
+    // bench/bench_gradescope.sh, and a hint for staff when grading is slow).
+    template <class Step>
+    bool timed(const char* what, Step step) {
+        const auto start = std::chrono::steady_clock::now();
+        const bool ok = step();
+        std::printf(
+            "%s%s took %.1f s\n", layout_.prefix.c_str(), what,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        std::fflush(stdout);
+        return ok;
+    }
+
+    // Reports that fail every check with `reason` and the tail of `log` ("":
+    // none); if even that fails, a results.json with the score and the reason.
+    void not_graded(const std::string& reason, const std::string& log) {
+        std::printf("%s%s\n", layout_.prefix.c_str(), reason.c_str());
+        std::fflush(stdout);
+        const fs::path grade = results_ / "grade";
+        std::error_code ec;
+        fs::remove_all(grade, ec);
+        try {
+            not_graded_command(reason, log, grade.string(), layout_.format, options_.labs);
+            fs::copy_file(grade / "results.json", results_ / "results.json",
+                          fs::copy_options::overwrite_existing);
+        } catch (const std::exception& e) {
+            std::printf("course autograde: error: %s\n", e.what());
+            write_fallback(reason, log, e.what());
+        }
+    }
+
+private:
+    // The results are root's: submitted code must not write them.
+    void prepare_results() {
+        fs::create_directories(results_);
+        std::error_code ec;
+        fs::remove(results_ / "results.json", ec);
+        fs::remove_all(results_ / "grade", ec);
+        if (geteuid() == 0 && chown(results_.c_str(), 0, 0) == 0) chmod(results_.c_str(), 0755);
+    }
+
+    // PrairieLearn brings the checkpoints and references with each job, in
+    // /grade where the user may read: course grades with a copy in the work
+    // directory, which only root may enter (Gradescope's setup.sh protects
+    // its own tree). `course grade --run-as` then checks that the user
+    // cannot read the references.
+    void private_data() {
+        if (!as_user_ || layout_.data == source_) return;
+        const fs::path copy = fs::path(work_->path()) / "data";
+        std::error_code ec;
+        fs::create_directories(copy, ec);
+        if (!ec) fs::copy(layout_.data / "labs", copy / "labs", fs::copy_options::recursive, ec);
+        if (ec)
+            throw fw::Error("cannot copy the checkpoints and references of " +
+                            layout_.data.string() + " to " + copy.string() + ": " + ec.message());
+        setenv("LAB_ROOT", copy.c_str(), 1);
+    }
+
+    bool place_submitted_files() {
+        std::printf("%sthe submitted files\n", layout_.prefix.c_str());
+        const std::vector<std::string> files = read_lines(source_ / "student_files.txt");
+        const SubmittedFiles submitted(layout_.submission, source_ / "student_versions", files);
+        for (const std::string& rel : files) {
+            const Chosen chosen = submitted.choose(rel);
+            const fs::path to = source_ / rel;
+            // Unchanged files keep their timestamps, so the rebuild stays small.
+            if (!same_contents(chosen.from, to) && !copy_contents(chosen.from, to)) {
+                not_graded(
+                    "the autograder could not copy " + chosen.from.string() + " to " + to.string(),
+                    "");
+                return false;
+            }
+            std::printf("  %-48s %s\n", rel.c_str(), chosen.how.c_str());
+        }
+        return true;
+    }
+
+    // Only `lab` holds submitted code; course is the autograder's own build.
+    // The compiler runs as the user, who cannot read references or checkpoint
+    // files, so no #include can quote them into the message.
+    bool build_lab() {
+        std::vector<std::string> command;
+        if (as_user_)
+            // A compiler cache, where the image has one, is root's: the user compiles plainly.
+            command = {"runuser", "-u", options_.user, "--", "env", "CCACHE_DISABLE=1"};
+        command.insert(command.end(), {"cmake", "--build", (source_ / "build").string(), "--target",
+                                       "lab", "-j", std::to_string(affinity_cpus())});
+        const std::string as = as_user_ ? " as " + options_.user : "";
+        std::printf("%sbuilding lab%s\n", layout_.prefix.c_str(), as.c_str());
+        std::error_code ec;
+        fs::remove(lab_, ec);
+        const fs::path log = fs::path(work_->path()) / "build.log";
+        if (run_logged(command, log, false) == 0 && access(lab_.c_str(), X_OK) == 0) return true;
+        not_graded(layout_.format == ResultsFormat::PrairieLearn
+                       ? "the submission does not build (the compiler's message is under Output)"
+                       : "the submission does not build (the compiler's message is at the top "
+                         "of the results)",
+                   log.string());
+        return false;
+    }
+
+    void grade() {
+        std::vector<std::string> command = {own_path(),  "grade",
+                                            "--lab",     lab_.string(),
+                                            "--out",     (results_ / "grade").string(),
+                                            "--timeout", options_.timeout};
+        std::string shown = "course grade --timeout " + options_.timeout;
+        if (as_user_) {
+            command.insert(command.end(), {"--run-as", options_.user});
+            shown += " --run-as " + options_.user;
+        }
+        // The shader cache setup.sh warmed beside course (root's, like course).
+        const fs::path cache = fs::path(own_path()).parent_path() / "shader-cache";
+        if (fs::is_directory(cache)) {
+            command.insert(command.end(), {"--shader-cache", cache.string()});
+            shown += " --shader-cache " + cache.filename().string();
+        }
+        if (layout_.format == ResultsFormat::PrairieLearn) {
+            command.insert(command.end(), {"--format", "prairielearn"});
+            shown += " --format prairielearn";
+        }
+        for (const std::string& lab : options_.labs) {
+            command.push_back(lab);
+            shown += " " + lab;
+        }
+        std::printf("%s%s\n", layout_.prefix.c_str(), shown.c_str());
+        const fs::path log = fs::path(work_->path()) / "grade.log";
+        const int status = run_logged(command, log, true);
+        std::error_code ec;
+        if (status <= 1 && fs::exists(results_ / "grade" / "results.json")) {
+            fs::copy_file(results_ / "grade" / "results.json", results_ / "results.json",
+                          fs::copy_options::overwrite_existing, ec);
+            if (!ec) return;
+        }
+        not_graded("course grade failed (exit status " + std::to_string(status) +
+                       "), so nothing was graded; please tell the course staff",
+                   log.string());
+    }
+
+    static std::string own_path() {
+        std::error_code ec;
+        const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+        if (ec) throw fw::Error("cannot find course's own executable (/proc/self/exe)");
+        return self.string();
+    }
+
+    void write_fallback(const std::string& reason, const std::string& log,
+                        const std::string& error) {
+        std::string text;
+        try {
+            if (!log.empty()) text += log_tail(log, 200) + "\n";
+        } catch (const std::exception& e) {
+            text += e.what() + std::string("\n");
+        }
+        text += "\n" + error + "\n";
+        std::error_code ec;
+        fs::create_directories(results_, ec);
+        report::write_text_file((results_ / "results.json").string(),
+                                fallback_json(layout_, reason, text));
+    }
+
+    AutogradeOptions options_;
+    Layout layout_;
+    fs::path source_, results_, lab_;
+    bool as_user_;                   // build and grade as options_.user (root, and the user exists)
+    std::unique_ptr<WorkDir> work_;  // for the logs
+};
+
+}  // namespace
+
+int autograde_command(const AutogradeOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const Layout layout = resolve_layout(options);
+    // course grades with these checkpoints and references; `lab` reads its
+    // shaders from the tree it was built from.
+    setenv("LAB_ROOT", layout.data.c_str(), 1);
+    unsetenv("LAB_SHADER_DIR");
+    Autograder autograder(options, layout);
+    try {
+        autograder.run();
+    } catch (const std::exception& e) {
+        autograder.not_graded(std::string("the autograder failed: ") + e.what(), "");
+    }
+    const auto seconds =
+        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start);
+    std::printf("%sdone in %lld s\n", layout.prefix.c_str(),
+                static_cast<long long>(seconds.count()));
+    return 0;
+}
+
+}  // namespace grading

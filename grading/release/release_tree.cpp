@@ -1,0 +1,245 @@
+// `course release`, the tree: which files, in what order, with what modes;
+// the text transformations are in release.cpp.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "framework/checkpoints.hpp"
+#include "framework/error.hpp"
+#include "framework/text.hpp"
+#include "grading/release/release.hpp"
+#include "grading/run/repository.hpp"
+
+namespace fs = std::filesystem;
+
+namespace grading {
+
+namespace {
+
+// A file the release writes: its text when transformed, else copied as is.
+struct Planned {
+    std::string rel;
+    bool transformed = false;
+    std::string text;
+};
+
+// A release read and checked, before anything is written.
+struct ReleasePlan {
+    std::vector<Planned> files;
+    std::map<std::string, std::set<std::string>> hidden;  // labs/NN_name -> hidden names
+};
+
+// How the file `rel` goes into the release; what it changes goes into
+// `plan.hidden` and `summary`. Throws fw::Error for a marker or data error.
+Planned plan_file(const fs::path& root, const std::string& rel, ReleasePlan& plan,
+                  ReleaseSummary& summary) {
+    const fs::path src = root / rel, r(rel);
+    Planned p;
+    p.rel = rel;
+    if (fs::is_regular_file(fs::symlink_status(src)) && is_marked_source(rel)) {
+        const std::string text = read_file(src);
+        const size_t blocks = solution_blocks(text, rel).size();
+        if (blocks > 0) {
+            p.transformed = true;
+            p.text = student_text(text, rel);
+            summary.blocks.push_back({rel, static_cast<int>(blocks)});
+        }
+    } else if (r.filename() == "checkpoints.json" && r.parent_path().parent_path() == "labs") {
+        // Its structure first, with the framework's messages.
+        fw::read_checkpoint_file(src.string());
+        VisibleCheckpoints v = drop_hidden_checkpoints(read_file(src), rel);
+        if (!v.dropped.empty()) {
+            p.transformed = true;
+            p.text = v.text;
+            plan.hidden[r.parent_path().string()].insert(v.dropped.begin(), v.dropped.end());
+            summary.hidden.push_back({rel, v.dropped});
+        }
+    }
+    return p;
+}
+
+// Pass 1: reads, transforms and checks every file; nothing is written yet.
+ReleasePlan plan_release(const fs::path& root, ReleaseSummary& summary) {
+    ReleasePlan plan;
+    std::string errors;
+    for (const std::string& rel : project_files(root.string())) {
+        if (!fs::exists(fs::symlink_status(root / rel))) {
+            summary.missing.push_back(rel);
+            continue;
+        }
+        try {
+            plan.files.push_back(plan_file(root, rel, plan, summary));
+        } catch (const fw::Error& e) {
+            errors += std::string("\n  ") + e.what();
+        }
+    }
+    if (!errors.empty()) throw fw::Error("the release was not written: fix these first:" + errors);
+    return plan;
+}
+
+// Whether `rel` is the reference image of a hidden checkpoint.
+bool is_hidden_reference(const ReleasePlan& plan, const std::string& rel) {
+    const fs::path r(rel);
+    const auto lab = plan.hidden.find(r.parent_path().parent_path().string());
+    return r.parent_path().filename() == "reference" && lab != plan.hidden.end() &&
+           lab->second.count(r.stem().string());
+}
+
+void create_parent(const fs::path& path) {
+    std::error_code ec;
+    fs::create_directories(path.parent_path(), ec);
+    if (ec)
+        throw fw::Error("cannot create directory '" + path.parent_path().string() +
+                        "': " + ec.message());
+}
+
+}  // namespace
+
+void require_new_output_dir(const fs::path& dir) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && (!fs::is_directory(dir, ec) || !fs::is_empty(dir, ec)))
+        throw fw::UsageError("output directory '" + dir.string() + "' " +
+                             (fs::is_directory(dir, ec) ? "is not empty" : "is not a directory") +
+                             "; give a new directory or empty this one");
+}
+
+void copy_entry(const fs::path& from, const fs::path& to) {
+    create_parent(to);
+    std::error_code ec;
+    if (fs::is_symlink(from))
+        fs::copy_symlink(from, to, ec);
+    else
+        fs::copy_file(from, to, ec);
+    if (ec)
+        throw fw::Error("cannot copy '" + from.string() + "' to '" + to.string() +
+                        "': " + ec.message());
+    if (!fs::is_symlink(from)) fs::permissions(to, fs::status(from).permissions(), ec);
+    if (ec) throw fw::Error("cannot set the mode of '" + to.string() + "': " + ec.message());
+}
+
+void write_file(const fs::path& path, const std::string& text, fs::perms mode) {
+    create_parent(path);
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out.flush())
+        throw fw::Error("cannot write '" + path.string() + "': check the disk and permissions");
+    std::error_code ec;
+    fs::permissions(path, mode, ec);
+    if (ec) throw fw::Error("cannot set the mode of '" + path.string() + "': " + ec.message());
+}
+
+std::string read_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw fw::Error("cannot read '" + path.string() +
+                        "': check that it exists and is readable");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<std::string> project_files(const std::string& source) {
+    std::vector<std::string> files;
+    fs::path root(source);
+    if (!fs::is_directory(root))
+        throw fw::Error("source tree '" + source +
+                        "' is not a directory; set LAB_ROOT to the repository");
+    // Untracked files count too: a release from a working tree holds what a
+    // build of that tree compiles (a new lab not yet committed included).
+    if (fs::exists(root / ".git")) {
+        std::string command = "git -C " + fw::shell_quote(source) +
+                              " ls-files -z --cached --others --exclude-standard";
+        FILE* p = popen(command.c_str(), "r");
+        if (!p) throw fw::Error("cannot run '" + command + "': is git installed?");
+        std::string listing;
+        char buf[4096];
+        size_t n;
+        while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) listing.append(buf, n);
+        int status = pclose(p);
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+            throw fw::Error("'" + command + "' failed in the git checkout '" + source +
+                            "' (see git's message above); install git or fix the checkout");
+        for (size_t b = 0, e; b < listing.size(); b = e + 1) {
+            e = listing.find('\0', b);
+            if (e == std::string::npos) e = listing.size();
+            if (e > b) files.push_back(listing.substr(b, e - b));
+        }
+    } else {
+        for (auto it = fs::recursive_directory_iterator(root);
+             it != fs::recursive_directory_iterator(); ++it) {
+            std::string name = it->path().filename().string();
+            bool top = it.depth() == 0;
+            if (it->is_directory() &&
+                (name == ".git" || name == ".cache" || (top && name.rfind("build", 0) == 0))) {
+                it.disable_recursion_pending();
+                continue;
+            }
+            if (!it->is_directory()) files.push_back(fs::relative(it->path(), root).string());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    files.erase(std::unique(files.begin(), files.end()), files.end());
+    return files;
+}
+
+ReleaseSummary release_tree(const std::string& source, const std::string& out) {
+    const fs::path root(source), dest(out);
+    require_new_output_dir(dest);
+    ReleaseSummary summary;
+    const ReleasePlan plan = plan_release(root, summary);
+
+    // Pass 2: write, leaving out the hidden checkpoints' references.
+    std::error_code ec;
+    fs::create_directories(dest, ec);
+    if (ec) throw fw::Error("cannot create output directory '" + out + "': " + ec.message());
+    for (const Planned& p : plan.files) {
+        if (is_hidden_reference(plan, p.rel)) {
+            summary.references_left_out.push_back(p.rel);
+            continue;
+        }
+        const fs::path src = root / p.rel;
+        if (p.transformed && !fs::is_symlink(src))
+            write_file(dest / p.rel, p.text, fs::status(src).permissions());
+        else
+            copy_entry(src, dest / p.rel);
+        ++summary.files;
+    }
+    return summary;
+}
+
+int release_command(const std::string& out_dir) {
+    const std::string source = source_root();
+    ReleaseSummary s = release_tree(source, out_dir);
+    int blocks = 0;
+    size_t checkpoints = 0;
+    std::printf("course release: the student version of %s\n", source.c_str());
+    for (const auto& [file, n] : s.blocks) {
+        std::printf("  %-48s %d solution block%s removed\n", file.c_str(), n, n == 1 ? "" : "s");
+        blocks += n;
+    }
+    for (const auto& [file, names] : s.hidden) {
+        const std::string list = fw::join(names, ", ");
+        std::printf("  %-48s %zu hidden checkpoint%s dropped: %s\n", file.c_str(), names.size(),
+                    names.size() == 1 ? "" : "s", list.c_str());
+        checkpoints += names.size();
+    }
+    for (const std::string& file : s.references_left_out)
+        std::printf("  %-48s left out (reference of a hidden checkpoint)\n", file.c_str());
+    for (const std::string& file : s.missing)
+        std::printf("  %-48s not written: tracked by git but missing from the tree\n",
+                    file.c_str());
+    std::printf(
+        "%zu files written to %s; %d solution blocks removed from %zu files; %zu hidden "
+        "checkpoints and %zu reference files left out\n",
+        s.files, out_dir.c_str(), blocks, s.blocks.size(), checkpoints,
+        s.references_left_out.size());
+    return 0;
+}
+
+}  // namespace grading

@@ -1,0 +1,323 @@
+// The text reports of a grading run: summary.txt (the score table `course
+// grade` also prints) and junit.xml (for CI dashboards). results.json is in
+// gradescope_results.cpp (Gradescope's autograder format) or prairielearn.cpp
+// (PrairieLearn's); index.html is in report_html.cpp.
+#include "grading/report/reports.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "framework/text.hpp"
+#include "grading/report/by_checkpoint.hpp"
+#include "grading/report/prairielearn_results.hpp"
+#include "grading/report/report_text.hpp"
+
+namespace grading {
+namespace report {
+
+namespace {
+
+// The code point of the UTF-8 sequence starting at text[i] and its length in
+// bytes; length 0 when the bytes there are not a well-formed sequence
+// (overlong forms and UTF-16 surrogates included).
+size_t decode_utf8(const std::string& text, size_t i, char32_t& cp) {
+    const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
+    size_t length = 0;
+    char32_t smallest = 0;
+    if (byte(i) < 0x80) {
+        cp = byte(i);
+        return 1;
+    } else if ((byte(i) & 0xE0) == 0xC0) {
+        length = 2, cp = byte(i) & 0x1F, smallest = 0x80;
+    } else if ((byte(i) & 0xF0) == 0xE0) {
+        length = 3, cp = byte(i) & 0x0F, smallest = 0x800;
+    } else if ((byte(i) & 0xF8) == 0xF0) {
+        length = 4, cp = byte(i) & 0x07, smallest = 0x10000;
+    } else {
+        return 0;
+    }
+    if (i + length > text.size()) return 0;
+    for (size_t k = i + 1; k < i + length; ++k) {
+        if ((byte(k) & 0xC0) != 0x80) return 0;
+        cp = (cp << 6) | (byte(k) & 0x3F);
+    }
+    if (cp < smallest || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+    return length;
+}
+
+// XML 1.0's Char production, less DEL and the C1 controls, which it
+// discourages and which no report wants.
+bool allowed_char(char32_t cp) {
+    if (cp == 0x9 || cp == 0xA || cp == 0xD) return true;
+    if (cp < 0x20 || (cp >= 0x7F && cp <= 0x9F)) return false;
+    return cp <= 0xD7FF || (cp >= 0xE000 && cp <= 0xFFFD) || cp >= 0x10000;
+}
+
+// summary.txt is plain ASCII: a character outside it prints as '?', a tab
+// as a space.
+std::string ascii(const std::string& text) {
+    std::string out;
+    for (unsigned char c : clean_text(text)) {
+        if (c == '\t')
+            out += ' ';
+        else if (c == '\r')
+            continue;
+        else if (c < 0x80)
+            out += static_cast<char>(c);
+        else if (c >= 0xC0)
+            out += '?';  // first byte of a sequence; the rest are skipped
+    }
+    return out;
+}
+
+std::string fixed(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+// One <testcase> per checkpoint (classname the lab, name the checkpoint),
+// its checks' text inside, failures first.
+std::string junit_xml(const GradeRun& run) {
+    size_t cases = 0, failures = 0;
+    std::vector<std::vector<CheckpointResult>> labs;
+    for (const LabResult& lab : run.labs) {
+        labs.push_back(by_checkpoint(lab));
+        cases += labs.back().size();
+        for (const CheckpointResult& cp : labs.back()) failures += cp.passed ? 0 : 1;
+    }
+    std::ostringstream x;
+    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<testsuites name=\"course grade\" tests=\"" << cases << "\" failures=\"" << failures
+      << "\" time=\"" << fixed(run.seconds, 3) << "\">\n";
+    for (size_t li = 0; li < run.labs.size(); ++li) {
+        const LabResult& lab = run.labs[li];
+        const std::string suite = escape_markup(lab.lab);
+        size_t lab_failures = 0;
+        for (const CheckpointResult& cp : labs[li]) lab_failures += cp.passed ? 0 : 1;
+        x << "  <testsuite name=\"" << suite << "\" tests=\"" << labs[li].size() << "\" failures=\""
+          << lab_failures << "\" errors=\"0\" skipped=\"0\" time=\"" << fixed(lab.seconds, 3)
+          << "\">\n";
+        for (const CheckpointResult& cp : labs[li]) {
+            x << "    <testcase classname=\"" << suite << "\" name=\""
+              << escape_markup(cp.checkpoint) << "\">\n";
+            const std::string text = checkpoint_text(lab, cp);
+            if (cp.passed) {
+                x << "      <system-out>" << escape_markup(text) << "</system-out>\n";
+            } else {
+                const std::string message = checkpoint_failure(lab, cp);
+                std::string kinds;
+                for (const CheckResult* c : cp.checks)
+                    if (!c->passed && kinds.find(name_of(c->kind)) == std::string::npos)
+                        kinds += (kinds.empty() ? "" : " ") + std::string(name_of(c->kind));
+                x << "      <failure message=\""
+                  << escape_markup(message.empty() ? "checkpoint failed" : message) << "\" type=\""
+                  << escape_markup(kinds) << "\">" << escape_markup(text) << "</failure>\n";
+            }
+            x << "    </testcase>\n";
+        }
+        if (!lab.status.ok())
+            x << "    <system-err>" << escape_markup(lab.status.text() + "\n" + lab.log)
+              << "</system-err>\n";
+        x << "  </testsuite>\n";
+    }
+    x << "</testsuites>\n";
+    return x.str();
+}
+
+}  // namespace
+
+size_t passed_count(const LabResult& lab) {
+    return static_cast<size_t>(std::count_if(lab.checks.begin(), lab.checks.end(),
+                                             [](const CheckResult& c) { return c.passed; }));
+}
+
+size_t check_count(const GradeRun& run) {
+    size_t n = 0;
+    for (const LabResult& lab : run.labs) n += lab.checks.size();
+    return n;
+}
+
+std::string clean_text(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (size_t i = 0; i < text.size();) {
+        char32_t cp = 0;
+        size_t length = decode_utf8(text, i, cp);
+        if (length == 0) {
+            out += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER
+            ++i;
+            continue;
+        }
+        if (cp == 0x1B && i + 1 < text.size() && text[i + 1] == '[') {
+            // A terminal colour or cursor sequence (ECMA-48 CSI: ESC [ parameters
+            // final byte in @..~), as compilers print to terminals: dropped whole.
+            i += 2;
+            while (i < text.size() && !(text[i] >= '@' && text[i] <= '~')) ++i;
+            i += i < text.size();
+            continue;
+        }
+        if (allowed_char(cp)) out.append(text, i, length);
+        i += length;
+    }
+    return out;
+}
+
+std::string escape_markup(const std::string& text) {
+    std::string out;
+    for (char c : clean_text(text)) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+std::string first_line(const std::string& text) {
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+        const size_t begin = line.find_first_not_of(" \t\r");
+        if (begin == std::string::npos) continue;
+        return line.substr(begin, line.find_last_not_of(" \t\r") - begin + 1);
+    }
+    return {};
+}
+
+std::string points(double value) {
+    std::string text = fixed(value, 2);
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.') text.pop_back();
+    return text == "-0" ? "0" : text;
+}
+
+std::string in_dir(const std::string& out_dir, const std::string& relative) {
+    std::filesystem::path path(relative);
+    return path.is_absolute() ? relative : (std::filesystem::path(out_dir) / path).string();
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (file) file << text;
+    if (file) file.close();
+    if (!file)
+        throw fw::Error("cannot write the report " + path + ": " + std::strerror(errno) +
+                        "; check that its directory exists and is writable, or pick another --out");
+}
+
+}  // namespace report
+
+std::string lab_table(const GradeRun& run) {
+    using report::ascii;
+    using report::points;
+    std::vector<std::array<std::string, 5>> rows{{"lab", "score", "checks", "status", "seconds"}};
+    for (const LabResult& lab : run.labs)
+        rows.push_back(
+            {ascii(lab.lab), points(lab.score()) + "/" + points(lab.max_score()),
+             std::to_string(report::passed_count(lab)) + "/" + std::to_string(lab.checks.size()),
+             ascii(report::first_line(lab.status.text())), report::fixed(lab.seconds, 1)});
+    std::array<size_t, 5> width{};
+    for (const auto& row : rows)
+        for (size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], row[i].size());
+
+    // Text columns align left, numbers right.
+    const std::array<bool, 5> right{false, true, true, false, true};
+    std::string table;
+    for (const auto& row : rows) {
+        std::array<std::string, 5> cells;
+        for (size_t i = 0; i < row.size(); ++i) {
+            const std::string pad(width[i] - row[i].size(), ' ');
+            cells[i] = right[i] ? pad + row[i] : row[i] + pad;
+        }
+        const std::string line = fw::join(cells, "  ");
+        table += line.substr(0, line.find_last_not_of(' ') + 1) + "\n";
+    }
+    if (run.labs.empty()) table += "(no labs were graded)\n";
+    return table;
+}
+
+std::string summary_table(const GradeRun& run) {
+    using report::ascii;
+    using report::points;
+    std::string table = lab_table(run);
+    std::string failed;
+    size_t passed = 0;
+    for (const LabResult& lab : run.labs) {
+        passed += report::passed_count(lab);
+        for (const CheckResult& c : lab.checks) {
+            if (c.passed) continue;
+            // The Observed line says what went wrong; the Expected line only
+            // repeats the check.
+            const std::string why = check_failure(lab, c);
+            failed += "  " +
+                      ascii(lab.lab + "/" + c.checkpoint + ": " + c.title +
+                            (why.empty() ? "" : " - " + why)) +
+                      "\n";
+        }
+    }
+    if (!failed.empty()) table += "\nFailed checks:\n" + failed;
+
+    const size_t labs = run.labs.size();
+    table += "\nTotal: " + points(run.score()) + "/" + points(run.max_score()) + " points, " +
+             std::to_string(passed) + " of " + std::to_string(report::check_count(run)) +
+             " checks passed, " + std::to_string(labs) + (labs == 1 ? " lab, " : " labs, ") +
+             report::fixed(run.seconds, 1) + " s" +
+             (run.backend.empty() ? "" : ", backend " + ascii(run.backend)) + "\n";
+    if (!run.sandbox.empty())
+        table += "Sandbox: " + ascii(report::sandbox_line(run.sandbox)) + "\n";
+    return table;
+}
+
+void write_reports(const GradeRun& run, const std::string& out_dir, const ResultsFile& results) {
+    std::error_code error;
+    std::filesystem::create_directories(out_dir, error);
+    if (error)
+        throw fw::Error("cannot create the report directory " + out_dir + ": " + error.message() +
+                        "; pick another --out");
+    if (!results.path.empty()) {
+        const std::filesystem::path parent = std::filesystem::path(results.path).parent_path();
+        if (!parent.empty()) std::filesystem::create_directories(parent, error);
+        if (error)
+            throw fw::Error("cannot create the directory of --results " + results.path + ": " +
+                            error.message());
+    }
+    report::write_text_file(report::in_dir(out_dir, "summary.txt"), summary_table(run));
+    const std::string results_path =
+        results.path.empty() ? report::in_dir(out_dir, "results.json") : results.path;
+    if (results.format == ResultsFormat::PrairieLearn)
+        report::write_text_file(results_path, prairielearn_results_json(run, out_dir));
+    else
+        report::write_text_file(results_path, report::gradescope_results_json(run, out_dir));
+    report::write_text_file(report::in_dir(out_dir, "junit.xml"), report::junit_xml(run));
+    report::write_text_file(report::in_dir(out_dir, "index.html"),
+                            report::html_report(run, out_dir));
+}
+
+}  // namespace grading

@@ -1,0 +1,31 @@
+// The reports of a grading run (docs/contract.md, Reports), all written into
+// the output directory: summary.txt (the table also printed), results.json
+// (Gradescope's format or PrairieLearn's), junit.xml, and a self-contained
+// index.html.
+#pragma once
+
+#include <string>
+
+#include "grading/results/results.hpp"
+
+namespace grading {
+
+// What results.json holds (`course grade --format`) and where it goes (`--results`).
+enum class ResultsFormat { Gradescope, PrairieLearn };
+struct ResultsFile {
+    ResultsFormat format = ResultsFormat::Gradescope;
+    std::string path;  // empty: results.json in the output directory
+};
+
+// The score table: one line per lab with its score, status and failed checks.
+std::string summary_table(const GradeRun& run);
+
+// The first part of that table: a header and one line per lab (score, checks
+// passed, status, seconds), without the failed checks or the total.
+std::string lab_table(const GradeRun& run);
+
+// Writes all four files; throws fw::Error naming a file that cannot be written.
+void write_reports(const GradeRun& run, const std::string& out_dir,
+                   const ResultsFile& results = {});
+
+}  // namespace grading

@@ -1,0 +1,78 @@
+#include "grading/results/results.hpp"
+
+#include <algorithm>
+
+#include "framework/error.hpp"
+
+namespace grading {
+
+const char* name_of(CheckKind kind) {
+    switch (kind) {
+        case CheckKind::Image:
+            return "image";
+        case CheckKind::Probe:
+            return "probe";
+        case CheckKind::Stat:
+            return "stat";
+        case CheckKind::Unit:
+            return "unit";
+    }
+    return "?";
+}
+
+const char* name_of(Visibility visibility) {
+    return visibility == Visibility::Hidden ? "hidden" : "visible";
+}
+
+Visibility visibility_named(const std::string& name) {
+    if (name == name_of(Visibility::Visible)) return Visibility::Visible;
+    if (name == name_of(Visibility::Hidden)) return Visibility::Hidden;
+    throw fw::Error("visibility \"" + name + "\"; a checkpoint's visibility is visible or hidden");
+}
+
+LabStatus LabStatus::failed(std::string why) {
+    LabStatus s;
+    s.why_ = why.empty() ? "failed" : std::move(why);
+    return s;
+}
+
+const std::string& LabStatus::text() const {
+    static const std::string kOk = "ok";
+    return ok() ? kOk : why_;
+}
+
+double LabResult::score() const {
+    double s = 0.0;
+    for (const CheckResult& c : checks) s += c.score;
+    return s;
+}
+
+double LabResult::max_score() const {
+    double s = 0.0;
+    for (const CheckResult& c : checks) s += c.max_score;
+    return s;
+}
+
+// A lab whose child failed has failed even when it has no checks to fail.
+bool LabResult::passed() const {
+    return status.ok() &&
+           std::all_of(checks.begin(), checks.end(), [](const CheckResult& c) { return c.passed; });
+}
+
+double GradeRun::score() const {
+    double s = 0.0;
+    for (const LabResult& l : labs) s += l.score();
+    return s;
+}
+
+double GradeRun::max_score() const {
+    double s = 0.0;
+    for (const LabResult& l : labs) s += l.max_score();
+    return s;
+}
+
+bool GradeRun::passed() const {
+    return std::all_of(labs.begin(), labs.end(), [](const LabResult& l) { return l.passed(); });
+}
+
+}  // namespace grading

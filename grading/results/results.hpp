@@ -1,0 +1,80 @@
+// What `course grade` found: one CheckResult per check of every checkpoint of
+// every lab. The reports (summary.txt, results.json, junit.xml, index.html)
+// are all written from this one structure.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grading/sandbox/limits.hpp"
+
+namespace grading {
+
+// The kinds of check (docs/contract.md, Checks), and a checkpoint's
+// visibility; their names are those of checkpoints.json and the reports.
+enum class CheckKind { Image, Probe, Stat, Unit };
+enum class Visibility { Visible, Hidden };
+const char* name_of(CheckKind kind);         // "image", "probe", "stat", "unit"
+const char* name_of(Visibility visibility);  // "visible", "hidden"
+// "visible" or "hidden" (fw::Checkpoint::visibility, checked when the file
+// was read); throws fw::Error for anything else.
+Visibility visibility_named(const std::string& name);
+
+struct CheckResult {
+    std::string lab;
+    std::string checkpoint;
+    CheckKind kind = CheckKind::Image;
+    std::string title;  // e.g. "probe (256, 256) colour", "image vs reference"
+    Visibility visibility = Visibility::Visible;
+    double score = 0.0;
+    double max_score = 0.0;
+    bool passed = false;
+    // Expected / observed, thresholds and measured figures, or why the check
+    // could not run (the child crashed, timed out, wrote no image...).
+    std::string output;
+    // Images for the HTML report, relative to the output directory; empty
+    // where the check has none.
+    std::string rendered, expected, difference;
+};
+
+// How a lab's child ended as a whole: it ran, or why it did not ("crashed
+// (signal 11, SIGSEGV)", "timed out after 60 s", "exit status 1", "output
+// unreadable: ...", "shader error in ...").
+class LabStatus {
+public:
+    LabStatus() = default;  // it ran
+    static LabStatus failed(std::string why);
+    bool ok() const { return why_.empty(); }
+    // "ok", or why it failed: what the reports print.
+    const std::string& text() const;
+
+private:
+    std::string why_;
+};
+
+struct LabResult {
+    std::string lab;
+    LabStatus status;
+    std::string log;  // the last part of the child's stdout and stderr
+    double seconds = 0.0;
+    std::vector<CheckResult> checks;
+
+    double score() const;
+    double max_score() const;
+    bool passed() const;  // every check passed
+};
+
+struct GradeRun {
+    std::vector<LabResult> labs;
+    std::string backend;  // as asked: auto, osmesa, egl
+    double seconds = 0.0;
+    // The sandbox's layers, active or not (grading/sandbox/sandbox.hpp), for
+    // summary.txt, index.html and results.json.
+    std::vector<SandboxLayer> sandbox;
+
+    double score() const;
+    double max_score() const;
+    bool passed() const;
+};
+
+}  // namespace grading

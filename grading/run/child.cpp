@@ -1,0 +1,390 @@
+#include "grading/run/child.hpp"
+
+#include <fcntl.h>
+#include <grp.h>
+#include <poll.h>
+#include <pwd.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "framework/error.hpp"
+#include "grading/sandbox/isolation.hpp"
+#include "grading/sandbox/sandbox.hpp"
+
+extern char** environ;
+
+namespace grading {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string seconds_text(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", s);
+    return buf;
+}
+
+// After fork() in a threaded program only async-signal-safe calls may run
+// until exec: no malloc, no stdio. These write a fixed message and the errno.
+[[noreturn]] void child_fail(const char* what) {
+    int e = errno;
+    char digits[16];
+    int n = 0;
+    do digits[n++] = static_cast<char>('0' + e % 10);
+    while ((e /= 10) > 0 && n < 15);
+    const char* prefix = "course: in the child, before running the lab: ";
+    ssize_t ignored = write(2, prefix, std::strlen(prefix));
+    ignored = write(2, what, std::strlen(what));
+    ignored = write(2, " failed, errno ", 15);
+    while (n > 0) ignored = write(2, &digits[--n], 1);
+    ignored = write(2, "\n", 1);
+    (void)ignored;
+    _exit(126);
+}
+
+void switch_user(const RunAsUser& user) {
+    // Groups first: after setuid the process may no longer change them.
+    if (setgroups(user.groups.size(), user.groups.data()) != 0) child_fail("setgroups");
+    if (setgid(user.gid) != 0) child_fail("setgid");
+    if (setuid(user.uid) != 0) child_fail("setuid");
+    if (getuid() != user.uid || geteuid() != user.uid || getegid() != user.gid)
+        child_fail("setuid check");
+}
+
+void set_limit(int resource, rlim_t value, const char* name) {
+    rlimit r{value, value};
+    if (setrlimit(resource, &r) != 0) child_fail(name);
+}
+
+}  // namespace
+
+std::uint64_t directory_bytes(const std::string& dir) {
+    std::uint64_t total = 0;
+    std::error_code ec;
+    for (fs::recursive_directory_iterator
+             it(dir, fs::directory_options::skip_permission_denied, ec),
+         end;
+         !ec && it != end; it.increment(ec)) {
+        struct stat st;
+        if (lstat(it->path().c_str(), &st) == 0 && S_ISREG(st.st_mode))
+            total += static_cast<std::uint64_t>(st.st_size);
+    }
+    return total;
+}
+
+std::string signal_status(int signal) {
+    const char* abbrev = sigabbrev_np(signal);
+    return "crashed (signal " + std::to_string(signal) + ", " +
+           (abbrev ? "SIG" + std::string(abbrev) : std::string("unknown")) + ")";
+}
+
+std::string indented_tail(const std::string& log, int lines) {
+    std::vector<std::string> all;
+    for (size_t pos = 0; pos < log.size();) {
+        size_t nl = std::min(log.find('\n', pos), log.size());
+        all.push_back(log.substr(pos, nl - pos));
+        pos = nl + 1;
+    }
+    std::string out;
+    for (size_t i = all.size() > size_t(lines) ? all.size() - size_t(lines) : 0; i < all.size();
+         ++i)
+        out += "    | " + (all[i].size() > 200 ? all[i].substr(0, 200) + "..." : all[i]) + "\n";
+    return out;
+}
+
+RunAsUser lookup_user(const std::string& name) {
+    if (geteuid() != 0)
+        throw fw::UsageError(
+            "--run-as " + name + " needs root, but course runs as uid " +
+            std::to_string(geteuid()) +
+            ": run course as root, or leave out --run-as to run the child as yourself");
+    struct passwd pw, *found = nullptr;
+    std::vector<char> buf(16384);
+    if (getpwnam_r(name.c_str(), &pw, buf.data(), buf.size(), &found) != 0 || !found)
+        throw fw::UsageError("--run-as: no user '" + name +
+                             "' on this machine; name an existing unprivileged user, e.g. nobody");
+    if (pw.pw_uid == 0)
+        throw fw::UsageError("--run-as " + name +
+                             ": that user is root, which would give the child "
+                             "root's rights; name an unprivileged user, e.g. nobody");
+    RunAsUser user{name, pw.pw_uid, pw.pw_gid, {}};
+    int count = 64;
+    user.groups.resize(static_cast<size_t>(count));
+    while (getgrouplist(name.c_str(), pw.pw_gid, user.groups.data(), &count) < 0)
+        user.groups.resize(static_cast<size_t>(count));
+    user.groups.resize(static_cast<size_t>(count));
+    return user;
+}
+
+bool user_can_access(const RunAsUser& user, const std::string& path, int mode) {
+    pid_t pid = fork();
+    if (pid < 0)
+        throw fw::Error(std::string("cannot fork to test access: ") + std::strerror(errno));
+    if (pid == 0) {
+        switch_user(user);
+        _exit(access(path.c_str(), mode) == 0 ? 0 : 1);
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) > 1)
+        throw fw::Error("cannot test what user '" + user.name + "' may do with '" + path +
+                        "': switching to that user failed");
+    return WEXITSTATUS(status) == 0;
+}
+
+namespace {
+
+// llvmpipe renders on every core and RLIMIT_CPU sums all threads: the
+// wall-clock timeout is the real limit; this one only stops a child that
+// outlives a killed course.
+rlim_t cpu_seconds_for(const ChildLimits& limits) {
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    return static_cast<rlim_t>(std::ceil(limits.timeout_seconds)) * cores + 10;
+}
+
+// Everything the forked process needs, built before fork(): argv and the
+// environment as execve() takes them (course's environment, with HOME, USER
+// and LOGNAME those of `user`), and its limits.
+struct ChildStart {
+    ChildStart(const std::vector<std::string>& args, const std::string& work_dir,
+               const ChildLimits& child_limits, const RunAsUser* run_as,
+               const std::vector<std::string>& env)
+        : dir(work_dir), limits(child_limits), user(run_as) {
+        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        std::vector<std::string> added = env;
+        if (user) {
+            added.push_back("HOME=" + dir);
+            added.push_back("USER=" + user->name);
+            added.push_back("LOGNAME=" + user->name);
+        }
+        auto replaced = [&added](const std::string& entry) {
+            for (const std::string& a : added)
+                if (entry.compare(0, a.find('=') + 1, a, 0, a.find('=') + 1) == 0) return true;
+            return false;
+        };
+        for (char** e = environ; *e; ++e)
+            if (!replaced(*e)) env_store.push_back(*e);
+        env_store.insert(env_store.end(), added.begin(), added.end());
+        for (std::string& e : env_store) envp.push_back(e.data());
+        envp.push_back(nullptr);
+    }
+
+    std::vector<char*> argv;
+    std::vector<std::string> env_store;
+    std::vector<char*> envp;
+    std::string dir;
+    ChildLimits limits;
+    const RunAsUser* user;
+    rlim_t cpu_seconds = cpu_seconds_for(limits);
+    const SeccompFilter* filter = nullptr;
+    const std::vector<int>* cgroup_fds = nullptr;  // "0" into each: join the lab's cgroup
+    pid_t parent = getpid();
+    int devnull = -1;  // its stdin
+    int out = -1;      // its stdout and stderr
+};
+
+// The forked child, until it runs the lab: its own process group, its
+// descriptors, limits and user.
+[[noreturn]] void exec_child(const ChildStart& c) {
+    setpgid(0, 0);  // its own group: a timeout kills whatever it started too
+    if (c.cgroup_fds)
+        for (const int fd : *c.cgroup_fds)
+            if (write(fd, "0", 1) != 1) child_fail("joining the lab's cgroup");
+    if (dup2(c.devnull, 0) < 0 || dup2(c.out, 1) < 0 || dup2(c.out, 2) < 0) child_fail("dup2");
+    if (chdir(c.dir.c_str()) != 0) child_fail("chdir to the work directory");
+    set_limit(RLIMIT_CPU, c.cpu_seconds, "RLIMIT_CPU");
+    set_limit(RLIMIT_FSIZE, c.limits.file_cap, "RLIMIT_FSIZE");
+    set_limit(RLIMIT_NOFILE, static_cast<rlim_t>(c.limits.open_files), "RLIMIT_NOFILE");
+    set_limit(RLIMIT_CORE, 0, "RLIMIT_CORE");
+#if !defined(__SANITIZE_ADDRESS__)
+    // Not under AddressSanitizer: its shadow memory reserves terabytes of
+    // address space, so any RLIMIT_AS would stop the (equally sanitized)
+    // child before main().
+    set_limit(RLIMIT_AS, c.limits.memory_cap, "RLIMIT_AS");
+#endif
+    // From here on the lab's own process, in new namespaces under an init.
+    if (c.limits.namespaces) enter_namespaces(child_fail);
+    if (c.user) {
+        // Counted per user at each fork: a fork bomb stops here.
+        set_limit(RLIMIT_NPROC, kRunAsProcesses, "RLIMIT_NPROC");
+        switch_user(*c.user);
+    }
+    // Killed with course, or with the namespace's init (set after setuid,
+    // which clears it).
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || (!c.limits.namespaces && getppid() != c.parent))
+        child_fail("prctl");
+    // Last: from here on no socket but AF_UNIX, no ptrace, ... (sandbox.hpp).
+    if (c.filter && !c.filter->install()) child_fail("installing the seccomp filter");
+    execve(c.argv[0], c.argv.data(), c.envp.data());
+    child_fail("exec of the lab executable");
+}
+
+// The parent's side of a running child: keeps the tail of its output, and
+// kills its whole process group, saying why, when it breaks a limit.
+class ChildWatch {
+public:
+    using Clock = std::chrono::steady_clock;
+    ChildWatch(pid_t pid, int out, const ChildStart& c, Clock::time_point start)
+        : pid_(pid), out_(out), dir_(c.dir), limits_(c.limits), start_(start) {}
+
+    // Until the child has exited and its pipe is drained (or held open past
+    // the drain time by something it left behind).
+    void watch() {
+        while (!(exited_ && (eof_ || elapsed() > drain_until_))) {
+            pollfd p{out_, POLLIN, 0};
+            poll(&p, eof_ ? 0 : 1, 50);  // after EOF: just wait
+            read_output();
+            const pid_t waited = exited_ ? 0 : waitpid(pid_, &wait_status_, WNOHANG);
+            if (waited < 0 && errno == ECHILD) {
+                // Reaped by someone else: its end is unknown, and waiting
+                // on would never end.
+                exited_ = true;
+                stop("ended unseen: course lost its exit status (a bug in course, not the lab)");
+                drain_until_ = elapsed() + 0.5;
+            } else if (waited == pid_) {
+                exited_ = true;
+                killpg(pid_, SIGKILL);  // anything it started and left running
+                // What is still in the pipe, unless something holds it open.
+                drain_until_ = elapsed() + 0.5;
+            }
+            if (!exited_) check_limits();
+        }
+        run_.seconds = elapsed();
+        if (run_.log.size() > limits_.log_kept)
+            run_.log.erase(0, run_.log.size() - limits_.log_kept);
+    }
+
+    bool killed() const { return killed_; }
+    int wait_status() const { return wait_status_; }
+    ChildRun& run() { return run_; }
+
+private:
+    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+    void stop(const std::string& why) {
+        if (!killed_) run_.status = LabStatus::failed(why);
+        killed_ = true;
+        killpg(pid_, SIGKILL);
+    }
+
+    void read_output() {
+        char buf[65536];
+        while (!eof_) {
+            const ssize_t n = read(out_, buf, sizeof buf);
+            if (n == 0) eof_ = true;
+            if (n <= 0) return;
+            written_ += static_cast<std::uint64_t>(n);
+            run_.log.append(buf, static_cast<size_t>(n));
+            if (run_.log.size() > 2 * limits_.log_kept)
+                run_.log.erase(0, run_.log.size() - limits_.log_kept);
+            if (written_ > limits_.output_cap)
+                stop("wrote more than " + mib_text(limits_.output_cap) + " to stdout/stderr");
+        }
+    }
+
+    void check_limits() {
+        if (elapsed() > limits_.timeout_seconds)
+            stop("timed out after " + seconds_text(limits_.timeout_seconds) + " s");
+        if (elapsed() > next_size_check_) {
+            next_size_check_ = elapsed() + 0.25;
+            if (directory_bytes(dir_) > limits_.work_dir_cap)
+                stop("wrote more than " + mib_text(limits_.work_dir_cap) +
+                     " into its work directory");
+        }
+    }
+
+    pid_t pid_;
+    int out_;
+    const std::string& dir_;
+    const ChildLimits& limits_;
+    Clock::time_point start_;
+    ChildRun run_;
+    std::uint64_t written_ = 0;
+    bool killed_ = false, exited_ = false, eof_ = false;
+    int wait_status_ = 0;
+    double next_size_check_ = 0.25, drain_until_ = 0.0;
+};
+
+// How a child that was not killed ended, as ChildRun::status says it.
+LabStatus exit_status(int wait_status, const ChildStart& c) {
+    if (WIFSIGNALED(wait_status)) {
+        const int sig = WTERMSIG(wait_status);
+        std::string status = signal_status(sig);
+        if (sig == SIGXFSZ)
+            status += ": it wrote a file over the " + mib_text(c.limits.file_cap) + " limit";
+        if (sig == SIGXCPU)
+            status += ": it used more than " + std::to_string(c.cpu_seconds) + " s of CPU time";
+        return LabStatus::failed(status);
+    }
+    if (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) != 0)
+        return LabStatus::failed("exit status " + std::to_string(WEXITSTATUS(wait_status)));
+    return {};
+}
+
+}  // namespace
+
+ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
+                   const ChildLimits& limits, const RunAsUser* user,
+                   const std::vector<std::string>& env) {
+    static const SeccompFilter filter;  // built once, before any fork
+    ChildStart start(argv, dir, limits, user, env);
+    start.filter = &filter;
+    std::unique_ptr<LabCgroup> cgroup;
+    if (limits.cgroups) {
+        cgroup =
+            std::make_unique<LabCgroup>(*limits.cgroups, limits.resident_cap, limits.processes_cap);
+        start.cgroup_fds = &cgroup->join_fds();
+    }
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) throw fw::Error(std::string("pipe: ") + std::strerror(errno));
+    start.devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
+    start.out = fds[1];
+    const auto started = ChildWatch::Clock::now();
+    const pid_t pid = fork_lab();
+    if (pid < 0) throw fw::Error(std::string("cannot fork the lab child: ") + std::strerror(errno));
+    if (pid == 0) exec_child(start);
+    setpgid(pid, pid);  // also here, so that killpg works before the child gets to it
+    close(fds[1]);
+    if (start.devnull >= 0) close(start.devnull);
+    fcntl(fds[0], F_SETFL, O_NONBLOCK);
+
+    ChildWatch watch(pid, fds[0], start, started);
+    watch.watch();
+    close(fds[0]);
+    ChildRun run = std::move(watch.run());
+    if (!watch.killed()) run.status = exit_status(watch.wait_status(), start);
+    lab_ended(pid);  // watch() has reaped it
+    if (cgroup) {
+        cgroup->kill_all();
+        if (cgroup->oom_kills() > 0 && !run.ok())
+            run.status =
+                LabStatus::failed("killed for memory: more than " + mib_text(limits.resident_cap) +
+                                  " in use (its cgroup's limit)");
+    }
+    // Whatever it left running, setsid() or not, dies with its lab. With a
+    // cgroup that has been found and killed already: then no process of the
+    // user outside it (another program's) is touched.
+    if (const int strays = kill_strays(cgroup ? nullptr : user))
+        run.log += "\ncourse: killed " + std::to_string(strays) +
+                   " process(es) the lab left running after it ended\n";
+    return run;
+}
+
+}  // namespace grading

@@ -1,0 +1,114 @@
+// Running one `lab grade-child` (framework/runner/grade_child.hpp) as an
+// untrusted process: its own process group, a wall-clock timeout, resource
+// limits, a cap on what it may print and write, optionally another user. What
+// it leaves in its work directory is read back only through ChildOutputs,
+// which refuses links, special files and anything over its size limit.
+#pragma once
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "grading/results/results.hpp"
+#include "grading/sandbox/limits.hpp"
+
+namespace grading {
+
+// Throws fw::UsageError when not root or when there is no such user.
+RunAsUser lookup_user(const std::string& name);
+// Whether `user` may access `path` with `mode` (R_OK, W_OK, X_OK), tested by
+// a process running as that user.
+bool user_can_access(const RunAsUser& user, const std::string& path, int mode);
+
+struct ChildRun {
+    LabStatus status;  // LabResult::status
+    std::string log;   // the last log_kept bytes of stdout + stderr
+    double seconds = 0.0;
+    bool ok() const { return status.ok(); }
+};
+
+// A fresh work directory under $TMPDIR (or /tmp), mode 0700, course's until
+// hand_over() gives it to `user` (when given); removed with everything in it
+// when the object goes.
+class WorkDir {
+public:
+    explicit WorkDir(const RunAsUser* user);
+    ~WorkDir();
+    WorkDir(const WorkDir&) = delete;
+    WorkDir& operator=(const WorkDir&) = delete;
+    const std::string& path() const { return path_; }
+    // Gives the directory, and everything course put in it, to the user.
+    void hand_over();
+
+private:
+    std::string path_;
+    const RunAsUser* user_ = nullptr;
+};
+
+// Runs argv[0] with argv in `dir` and waits for it within the limits. `env`
+// ("NAME=value") is added to course's environment, replacing what it names.
+ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
+                   const ChildLimits& limits, const RunAsUser* user,
+                   const std::vector<std::string>& env = {});
+
+// The files a finished child left, read with limits. Every failure is a
+// sentence fit for a check's output.
+class ChildOutputs {
+public:
+    ChildOutputs(std::string dir, const ChildRun& run, const ChildLimits& limits);
+
+    // The bytes of `name`, or false and `why`: missing (and then why: the
+    // child crashed, timed out, or wrote NAME.error.txt instead), not a regular
+    // file, or over `limit` bytes ("output too large").
+    bool read(const std::string& name, std::uint64_t limit, std::string& bytes,
+              std::string& why) const;
+    // Path of a file that read() accepted, for decoders that take a path.
+    std::string path(const std::string& name) const { return dir_ + "/" + name; }
+    // Why there is no `name` when the child did not write it.
+    std::string missing_reason(const std::string& name) const;
+    // Non-empty when the work directory as a whole is over its cap.
+    const std::string& too_large() const { return too_large_; }
+
+private:
+    std::string dir_;
+    ChildRun run_;
+    std::string too_large_;  // set when the directory as a whole is over its cap
+};
+
+// The `lab` grade-child run for one job: writes JOB.json into a fresh work
+// directory, runs the child there and keeps the directory for reading.
+struct LabChild {
+    std::unique_ptr<WorkDir> dir;
+    ChildRun run;
+    std::unique_ptr<ChildOutputs> outputs;
+};
+//
+// Mesa's shader cache: with `shader_cache` empty, the child uses Mesa's default
+// (under its HOME, which --run-as makes the fresh work directory: always
+// cold). Otherwise it is a single-file Mesa cache directory (course
+// warm-cache), and the child starts from a private copy of it, so that no lab
+// can change what another lab's shaders compile to; with `shared`, the
+// child writes into the directory itself (only for warming it).
+struct ShaderCache {
+    std::string dir;
+    bool shared = false;
+};
+LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
+                       const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
+                       const ShaderCache& shader_cache = {});
+
+// Bytes in regular files under `dir`, not following links.
+std::uint64_t directory_bytes(const std::string& dir);
+
+// "crashed (signal 11, SIGSEGV)".
+std::string signal_status(int signal);
+
+// The last `lines` lines of a child's log, indented and cut to 200
+// characters each, for the console.
+std::string indented_tail(const std::string& log, int lines);
+
+}  // namespace grading

@@ -1,0 +1,580 @@
+// The repository's layout, read from its files (no build, no GL): grading's rooms include only
+// rooms below them, framework and grading headers include no cycle, and every repository path
+// and docs section that a comment or a Markdown page cites exists.
+//
+// The files read are those of framework/ grading/ labs/ shaders/ tests/ bench/ scripts/ docs/
+// and README.md that git lists or would add (build*/ and third_party/ left out). Read are:
+// - Comments: `//` and `/* */` in C++ and GLSL, `#` in shell scripts and CMakeLists.txt.
+//   Consecutive comment lines are one text, so a citation may wrap. Markdown pages (docs/*.md,
+//   README.md, labs/*/README.md) are read paragraph by paragraph.
+// - A cited path is a word starting with framework/ grading/ labs/ shaders/ tests/ bench/
+//   scripts/ docs/ third_party/ or .ci/ that does not continue another word or path (so
+//   build/grade/, /autograder/tests/ and $OUT/docs/ are no repository paths), up to the first
+//   character that cannot be in a path (so `:12-30` is left out) and without a trailing `.`.
+//   NN_name and NN_* stand for any lab folder, `*` and an upper-case word (NAME, CHECKPOINT;
+//   README excepted) for any part of a name: some path must match, from the top or, as in the
+//   listings of a lab's folder, from a lab folder (`tests/*.cpp`). A path without a placeholder
+//   or an extension may name the program built from a source of that name (bench/bench_png).
+//   labs/07_warmup/, the lab of README's "Adding a lab", exists only in its test's copy.
+// - A section citation is a page (docs/contract.md, docs/labs.md, docs/conventions.md,
+//   labs/NN_name/README.md; README.md is the sheet of the lab the citing file is in, else the
+//   top README) followed directly by ", " and comma-separated names, up to `)`, `;`, `:`, `|`,
+//   ` (`, a closing `"` or the end of the sentence. The first name is a heading of the page.
+//   Each further name is a heading, or the label that opens a paragraph, list item or table row,
+//   inside the previous name's section (docs/contract.md, `course`, Sandbox; docs/contract.md,
+//   Checks, `image`), unless it starts with a lower-case letter: that is prose
+//   (docs/contract.md, Exit status and errors, lists them) and ends the names. A first name that
+//   is a file (a word with `/` or `.`) makes a list of files, not a citation. Names compare
+//   without backticks and quotes, case-insensitively, and match a heading that continues them
+//   after a space or punctuation (`course release` cites "`course release --out DIR`").
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/test_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// grading's rooms, lowest floor first: a room includes only itself and the rooms below.
+const std::vector<std::string> kRooms = {"sandbox", "results", "run",       "units",   "judge",
+                                         "report",  "release", "platforms", "commands"};
+// The lab that README's "Adding a lab" makes, in a copy of the tree only
+// (tests/tools/test_new_lab.cpp).
+const std::string kNewLab = "07_warmup";
+
+struct Problem {
+    std::string where;  // file:line
+    std::string what;   // what is wrong and what to fix
+};
+
+struct Repo {
+    fs::path root;
+    std::vector<std::string> files;  // the files read, relative to root
+    std::vector<std::string> all;    // every file and folder under root, for patterns
+};
+
+unsigned char u(char c) { return static_cast<unsigned char>(c); }  // for <cctype>
+bool starts_with(const std::string& s, const std::string& prefix) {
+    return s.rfind(prefix, 0) == 0;
+}
+bool ends_with(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() &&
+           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+Repo read_repo(const fs::path& root) {
+    static const std::regex read("(framework|grading|labs|shaders|tests|bench|scripts|docs)/.*");
+    Repo repo{root, {}, {}};
+    for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator();
+         ++it) {
+        const std::string name = it->path().filename().string();
+        if (it->is_directory() && (name == ".git" || starts_with(name, "build"))) {
+            it.disable_recursion_pending();
+            continue;
+        }
+        const std::string rel = fs::relative(it->path(), root).generic_string();
+        repo.all.push_back(rel);
+        if (it->is_regular_file() && std::regex_match(rel, read) &&
+            rel.find("third_party/") == std::string::npos)
+            repo.files.push_back(rel);
+    }
+    if (fs::exists(root / "README.md")) repo.files.push_back("README.md");
+    std::sort(repo.files.begin(), repo.files.end());
+    return repo;
+}
+
+std::vector<std::string> read_lines(const fs::path& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+// The `#include "X"` lines of a C++ file: (line number, X).
+std::vector<std::pair<int, std::string>> quoted_includes(const fs::path& path) {
+    static const std::regex include(R"re(^\s*#\s*include\s*"([^"]+)")re");
+    std::vector<std::pair<int, std::string>> out;
+    const std::vector<std::string> lines = read_lines(path);
+    std::smatch m;
+    for (size_t i = 0; i < lines.size(); ++i)
+        if (std::regex_search(lines[i], m, include)) out.emplace_back(int(i) + 1, m[1].str());
+    return out;
+}
+
+// grading/ROOM/... -> its floor in kRooms; -1 for a path in no room.
+int floor_of(const std::string& path, std::string& room) {
+    const size_t slash = path.find('/', 8);
+    room = starts_with(path, "grading/") && slash != std::string::npos ? path.substr(8, slash - 8)
+                                                                       : "";
+    const auto it = std::find(kRooms.begin(), kRooms.end(), room);
+    return it == kRooms.end() ? -1 : int(it - kRooms.begin());
+}
+
+std::vector<Problem> room_problems(const Repo& repo) {
+    static const std::regex checked(R"((grading/.*|labs/[^/]+/grading/[^/]+)\.(cpp|hpp))");
+    std::vector<Problem> out;
+    for (const std::string& f : repo.files) {
+        if (!std::regex_match(f, checked) || f == "grading/main.cpp") continue;
+        const bool in_lab = starts_with(f, "labs/");
+        std::string room, to;
+        const int floor = floor_of(f, room);
+        for (const auto& [line, inc] : quoted_includes(repo.root / f)) {
+            const int to_floor = floor_of(inc, to);
+            const std::string where = f + ":" + std::to_string(line);
+            if (!starts_with(inc, "grading/")) continue;
+            if (to_floor < 0)
+                out.push_back({where, "includes \"" + inc + "\", which is in no room of grading/"});
+            else if (in_lab && to != "units")
+                out.push_back({where, "a lab's grading reference includes \"" + inc +
+                                          "\"; it may include grading/units/ only"});
+            else if (!in_lab && floor < 0)
+                out.push_back({where, f + " is in no room; move it into one of grading's rooms"});
+            else if (!in_lab && to_floor > floor)
+                out.push_back({where, "room " + room + " includes \"" + inc + "\" of room " + to +
+                                          ", which is above it; move what it needs down into " +
+                                          room + " or a room below"});
+        }
+    }
+    return out;
+}
+
+// Follows the includes from `at`; true when one leads back to a header on `path`, which then
+// holds the chain "a.hpp:3 includes b.hpp", ... that closes the cycle.
+using Graph = std::map<std::string, std::vector<std::pair<int, std::string>>>;
+bool find_cycle(const Graph& g, const std::string& at, std::map<std::string, int>& state,
+                std::vector<std::string>& path) {
+    state[at] = 1;  // on the path
+    for (const auto& [line, to] : g.at(at)) {
+        path.push_back(at + ":" + std::to_string(line) + " includes " + to);
+        if (state[to] == 1 || (state[to] == 0 && find_cycle(g, to, state, path))) return true;
+        path.pop_back();
+    }
+    state[at] = 2;  // no cycle through it
+    return false;
+}
+
+std::vector<Problem> cycle_problems(const Repo& repo, size_t& headers) {
+    static const std::regex header("(framework|grading)/.*\\.hpp");
+    Graph g;
+    for (const std::string& f : repo.files)
+        if (std::regex_match(f, header)) g[f];
+    headers = g.size();
+    for (auto& [f, edges] : g)
+        for (const auto& [line, inc] : quoted_includes(repo.root / f))
+            if (g.count(inc)) edges.emplace_back(line, inc);
+    std::map<std::string, int> state;
+    std::vector<Problem> out;
+    for (const auto& [f, edges] : g) {
+        std::vector<std::string> path;
+        if (state[f] != 0 || !find_cycle(g, f, state, path)) continue;
+        const std::string back_to = path.back().substr(path.back().rfind(' ') + 1);
+        std::string chain;
+        for (const std::string& step : path)
+            if (!chain.empty() || starts_with(step, back_to + ":")) chain += "\n  " + step;
+        out.push_back({chain.substr(3, chain.find(' ', 3) - 3),
+                       "header cycle; break it with a forward declaration or by moving what the "
+                       "last include needs into a header of its own:" +
+                           chain});
+    }
+    return out;
+}
+
+// A text to search for citations: consecutive comment lines, or a Markdown paragraph, joined
+// by spaces; line_at[i] is the line of text[i].
+struct Passage {
+    std::string text;
+    std::vector<int> line_at;
+    int last = 0;         // its last line
+    bool closed = false;  // a Markdown heading, table row or line of code: nothing joins it
+};
+
+// Adds `piece`, on `line`, to the last passage when that is open and ended on the line before.
+void add_piece(std::vector<Passage>& out, const std::string& piece, int line, bool alone = false) {
+    if (alone || out.empty() || out.back().closed || out.back().last < line - 1) out.emplace_back();
+    Passage& p = out.back();
+    if (p.last != 0) p.text += ' ', p.line_at.push_back(line);
+    p.text += piece;
+    p.line_at.insert(p.line_at.end(), piece.size(), line);
+    p.last = line;
+    p.closed = alone;
+}
+
+void add_comment(std::vector<Passage>& out, const std::string& piece, int line) {
+    const size_t start = piece.find_first_not_of(" \t/*#!");
+    add_piece(out, start == std::string::npos ? "" : piece.substr(start), line);
+}
+
+// Skips the string, character or raw string literal that opens at s[i]; for a raw string not
+// closed on this line, sets `raw_end` to its `)delim"`. Returns the index of its last character.
+size_t skip_literal(const std::string& s, size_t i, std::string& raw_end) {
+    const char quote = s[i];
+    if (quote == 'R') {
+        const size_t open = s.find('(', i);
+        if (open == std::string::npos) return s.size();
+        raw_end = ")" + s.substr(i + 2, open - i - 2) + "\"";
+        const size_t end = s.find(raw_end, open);
+        if (end == std::string::npos) return s.size();
+        i = end + raw_end.size() - 1;
+        raw_end.clear();
+        return i;
+    }
+    for (++i; i < s.size() && s[i] != quote; ++i) i += s[i] == '\\';
+    return i;
+}
+
+// Comments of C++ and GLSL; literals are skipped.
+std::vector<Passage> c_comments(const std::vector<std::string>& lines) {
+    std::vector<Passage> out;
+    bool block = false;
+    std::string raw_end;  // inside a raw string literal: its closing `)delim"`
+    for (size_t n = 0; n < lines.size(); ++n) {
+        const std::string& s = lines[n];
+        size_t i = 0, begin = 0;
+        if (!raw_end.empty()) {
+            const size_t end = s.find(raw_end);
+            i = end == std::string::npos ? s.size() : end + raw_end.size();
+            if (end != std::string::npos) raw_end.clear();
+        }
+        for (; i < s.size(); ++i) {
+            const bool word_before = i > 0 && (std::isalnum(u(s[i - 1])) || s[i - 1] == '_');
+            if (block) {
+                if (s.compare(i, 2, "*/") != 0) continue;
+                add_comment(out, s.substr(begin, i - begin), int(n) + 1);
+                block = false, ++i;
+            } else if (s.compare(i, 2, "//") == 0) {
+                add_comment(out, s.substr(i), int(n) + 1);
+                break;
+            } else if (s.compare(i, 2, "/*") == 0) {
+                block = true, begin = i + 2, ++i;
+            } else if (s[i] == '"' || (!word_before && (s[i] == '\'' || !s.compare(i, 2, "R\"")))) {
+                i = skip_literal(s, i, raw_end);
+            }
+        }
+        if (block) add_comment(out, s.substr(std::min(begin, s.size())), int(n) + 1);
+    }
+    return out;
+}
+
+// `#` comments of shell scripts and CMakeLists.txt: a `#` outside quotes that starts a word.
+std::vector<Passage> hash_comments(const std::vector<std::string>& lines, bool shell) {
+    std::vector<Passage> out;
+    for (size_t n = 0; n < lines.size(); ++n) {
+        const std::string& s = lines[n];
+        char quote = 0;
+        for (size_t i = 0; i < s.size(); ++i) {
+            if (quote) {
+                i += s[i] == '\\' && quote == '"';
+                quote = i < s.size() && s[i] == quote ? 0 : quote;
+            } else if (s[i] == '"' || (shell && s[i] == '\'')) {
+                quote = s[i];
+            } else if (s[i] == '#' && (i == 0 || std::isspace(u(s[i - 1])) || s[i - 1] == '(')) {
+                if (n > 0 || !starts_with(s, "#!")) add_comment(out, s.substr(i), int(n) + 1);
+                break;
+            }
+        }
+    }
+    return out;
+}
+
+bool is_fence(const std::string& s) {
+    const size_t start = s.find_first_not_of(' ');
+    return start != std::string::npos && s.compare(start, 3, "```") == 0;
+}
+
+// Markdown: paragraphs; a heading, a table row and a line of a code block each stand alone.
+std::vector<Passage> markdown_passages(const std::vector<std::string>& lines) {
+    std::vector<Passage> out;
+    bool code = false;
+    for (size_t n = 0; n < lines.size(); ++n) {
+        const std::string& s = lines[n];
+        const size_t start = s.find_first_not_of(' ');
+        code = code != is_fence(s);
+        if (start != std::string::npos)
+            add_piece(out, s, int(n) + 1, code || s[start] == '#' || s[start] == '|');
+    }
+    return out;
+}
+
+bool is_markdown(const std::string& f) {
+    static const std::regex page(R"(docs/[^/]+\.md|README\.md|labs/[^/]+/README\.md)");
+    return std::regex_match(f, page);
+}
+
+// The passages in which `f` may cite paths and sections; none for other kinds of file.
+std::vector<Passage> passages(const Repo& repo, const std::string& f) {
+    static const std::set<std::string> c_like = {".cpp",  ".hpp",  ".glsl", ".vert", ".frag",
+                                                 ".geom", ".tesc", ".tese", ".comp"};
+    const std::string ext = fs::path(f).extension().string();
+    const std::vector<std::string> lines = read_lines(repo.root / f);
+    if (is_markdown(f)) return markdown_passages(lines);
+    if (c_like.count(ext)) return c_comments(lines);
+    if (ext == ".sh") return hash_comments(lines, true);
+    if (fs::path(f).filename() == "CMakeLists.txt") return hash_comments(lines, false);
+    return {};
+}
+
+// A regex for one folder or file name of a cited path; sets `placeholder` when it has one.
+std::string name_regex(const std::string& seg, bool& placeholder) {
+    std::string out;
+    for (size_t i = 0; i < seg.size();) {
+        size_t end = i;
+        while (end < seg.size() &&
+               (std::isupper(u(seg[end])) || std::isdigit(u(seg[end])) || seg[end] == '_'))
+            ++end;
+        const std::string word = seg.substr(i, end - i);
+        const bool any_lab = seg.compare(i, 7, "NN_name") == 0 || seg.compare(i, 4, "NN_*") == 0;
+        const bool any_name = (i == 0 || !std::isalpha(u(seg[i - 1]))) &&
+                              (end == seg.size() || !std::islower(u(seg[end]))) &&
+                              word.size() >= 2 && word != "README";
+        placeholder = placeholder || any_lab || any_name || seg[i] == '*';
+        if (any_lab) {
+            out += "[0-9][0-9]_[a-z0-9_]+", i += seg[i + 3] == '*' ? 4 : 7;
+        } else if (seg[i] == '*') {
+            out += "[^/]*", ++i;
+        } else if (any_name) {
+            out += "[^/]+", i = end;
+        } else {
+            if (std::string(".^$|()[]{}+?\\").find(seg[i]) != std::string::npos) out += '\\';
+            out += seg[i++];
+        }
+    }
+    return out;
+}
+
+bool matches_any(const Repo& repo, const std::string& pattern) {
+    const std::regex re(pattern);
+    return std::any_of(repo.all.begin(), repo.all.end(),
+                       [&](const std::string& p) { return std::regex_match(p, re); });
+}
+
+bool path_exists(const Repo& repo, const std::string& cited) {
+    static const std::regex new_lab("(labs|shaders)/" + kNewLab + "(/.*)?");
+    if (fs::exists(repo.root / cited) || std::regex_match(cited, new_lab)) return true;
+    std::string pattern;
+    bool placeholder = false;
+    std::stringstream parts(cited);
+    for (std::string seg; std::getline(parts, seg, '/');)
+        if (!seg.empty()) pattern += (pattern.empty() ? "" : "/") + name_regex(seg, placeholder);
+    if (!placeholder) return matches_any(repo, pattern + "\\.[a-z]+");  // a program's source
+    return matches_any(repo, pattern) || matches_any(repo, "labs/[0-9][0-9]_[^/]+/" + pattern);
+}
+
+std::vector<Problem> path_problems(const Repo& repo, size_t& cited) {
+    static const std::regex token(
+        "(^|[^A-Za-z0-9_./$~}-])((framework|grading|labs|shaders|tests|bench|scripts|docs|"
+        "third_party|\\.ci)/[A-Za-z0-9_.*/-]*)");
+    std::vector<Problem> out;
+    for (const std::string& f : repo.files)
+        for (const Passage& p : passages(repo, f))
+            for (auto it = std::sregex_iterator(p.text.begin(), p.text.end(), token);
+                 it != std::sregex_iterator(); ++it) {
+                std::string path = (*it)[2].str();
+                while (ends_with(path, ".")) path.pop_back();
+                ++cited;
+                if (path_exists(repo, path)) continue;
+                const int line = p.line_at[size_t(it->position(2))];
+                out.push_back({f + ":" + std::to_string(line),
+                               "cites " + path + ", which does not exist; cite where it is now"});
+            }
+    return out;
+}
+
+// Without backticks and quotes, lower case, spaces collapsed.
+std::string normalised(const std::string& s) {
+    std::string out;
+    for (const char c : s) {
+        if (c == '`' || c == '"' || (std::isspace(u(c)) && (out.empty() || out.back() == ' ')))
+            continue;
+        out += std::isspace(u(c)) ? ' ' : char(std::tolower(u(c)));
+    }
+    if (!out.empty() && out.back() == ' ') out.pop_back();
+    return out;
+}
+
+// Whether `text` is `name`, or continues it after a space or punctuation (both normalised).
+bool opens_with(const std::string& text, const std::string& name) {
+    return !name.empty() && starts_with(text, name) &&
+           (text.size() == name.size() || !std::isalnum(u(text[name.size()])));
+}
+
+// A Markdown page, line by line, normalised: a heading's level (else 0) and text, or the text
+// of any other line without its list or table marker; lines of code blocks are left empty.
+struct Page {
+    std::vector<std::pair<int, std::string>> lines;
+    std::string headings;  // all of them, for messages
+};
+
+Page read_page(const fs::path& path) {
+    static const std::regex heading(R"(^(#{1,6}) +(.*?)[ #]*$)");
+    static const std::regex marker(R"(^\s*(- |\* |\| |[0-9]+\. )?(\*\*)?)");
+    Page page;
+    bool code = false;
+    std::smatch m;
+    for (const std::string& s : read_lines(path)) {
+        const bool fence = is_fence(s);
+        code = code != fence;
+        if (code || fence) {
+            page.lines.emplace_back(0, "");
+        } else if (std::regex_match(s, m, heading)) {
+            page.lines.emplace_back(int(m[1].length()), normalised(m[2].str()));
+            page.headings += (page.headings.empty() ? "" : " | ") + m[2].str();
+        } else {
+            page.lines.emplace_back(0, normalised(std::regex_replace(s, marker, "")));
+        }
+    }
+    return page;
+}
+
+// The sections [begin, end) inside `within` whose heading is `name`; for a further name
+// (`first` false) `within` itself when a paragraph, list item or table row in it opens so.
+using Section = std::pair<size_t, size_t>;
+std::vector<Section> find_name(const Page& page, Section within, const std::string& name,
+                               bool first) {
+    std::vector<Section> found;
+    for (size_t i = within.first; i < within.second; ++i) {
+        const auto& [level, text] = page.lines[i];
+        if (!opens_with(text, name) || (level == 0 && first)) continue;
+        if (level == 0) return {within};
+        size_t end = i + 1;
+        while (end < page.lines.size() &&
+               !(page.lines[end].first > 0 && page.lines[end].first <= level))
+            ++end;
+        found.emplace_back(i, end);
+    }
+    return found;
+}
+
+// Whether a cited name is a file rather than a heading: its first word has a `/`, or it is
+// one word with a `.`.
+bool names_file(const std::string& name) {
+    const std::string word = name.substr(0, name.find(' '));
+    return word.find('/') != std::string::npos ||
+           (word == name && name.find('.') != std::string::npos);
+}
+
+// The names cited after "FILE, " at t[i], normalised (the file's header says how they are
+// read). A `"` opens a quoted name at the start of a name; another one ends the names.
+std::vector<std::string> cited_names(const std::string& t, size_t i) {
+    std::vector<std::string> names(1);
+    bool code = false, quoted = false;
+    for (; i < t.size(); ++i) {
+        const char c = t[i];
+        const bool blank = names.back().find_first_not_of(' ') == std::string::npos;
+        const bool ends = c == ')' || c == ';' || c == ':' || c == '|' ||
+                          (c == '"' && !blank && !quoted) || (c == '(' && t[i - 1] == ' ') ||
+                          (c == '.' && (i + 1 == t.size() || t[i + 1] == ' '));
+        if (c == '`') code = !code;
+        if (c == '"' && !code) quoted = blank;
+        if (!code && ends) break;
+        if (!code && c == ',') names.emplace_back();
+        if (code || c != ',') names.back() += c;
+    }
+    for (size_t n = 0; n < names.size(); ++n) {
+        const size_t first = names[n].find_first_not_of(' ');
+        const bool prose = first != std::string::npos && std::islower(u(names[n][first]));
+        names[n] = normalised(names[n]);
+        if (names[n].empty() || (n > 0 && (prose || names_file(names[n])))) names.resize(n);
+    }
+    if (!names.empty() && names_file(names[0])) names.clear();  // a list of files
+    return names;
+}
+
+// What is wrong with citing `names` of `page` (`file`); empty when each is there.
+std::string citation_problem(const Page& page, const std::string& file,
+                             const std::vector<std::string>& names) {
+    std::vector<Section> in = {{0, page.lines.size()}};
+    for (size_t n = 0; n < names.size(); ++n) {
+        std::vector<Section> found;
+        for (const Section& s : in) {
+            const std::vector<Section> here = find_name(page, s, names[n], n == 0);
+            found.insert(found.end(), here.begin(), here.end());
+        }
+        if (found.empty() && n == 0)
+            return "cites \"" + names[0] + "\" of " + file +
+                   ", which has no such heading; cite one of: " + page.headings;
+        if (found.empty())
+            return "cites \"" + names[n] + "\" under \"" + names[n - 1] + "\" of " + file +
+                   ", where no heading, paragraph, list item or table row opens so";
+        in = found;
+    }
+    return "";
+}
+
+std::vector<Problem> heading_problems(const Repo& repo, size_t& cited) {
+    static const std::regex citation(
+        "(^|[^A-Za-z0-9_./-])(docs/[a-z_]+\\.md|labs/[0-9][0-9]_[a-z0-9_]+/README\\.md|"
+        "README\\.md), ");
+    static const std::regex lab_folder("labs/[0-9][0-9]_[a-z0-9_]+/");
+    std::map<std::string, Page> pages;
+    std::vector<Problem> out;
+    for (const std::string& f : repo.files)
+        for (const Passage& p : passages(repo, f))
+            for (auto it = std::sregex_iterator(p.text.begin(), p.text.end(), citation);
+                 it != std::sregex_iterator(); ++it) {
+                std::smatch lab;
+                std::string file = (*it)[2].str();
+                if (file == "README.md" && std::regex_search(f, lab, lab_folder) &&
+                    lab.position(0) == 0)
+                    file = lab.str(0) + file;
+                const auto names = cited_names(p.text, size_t(it->position(0) + it->length(0)));
+                if (names.empty() || !fs::exists(repo.root / file)) continue;
+                if (!pages.count(file)) pages[file] = read_page(repo.root / file);
+                ++cited;
+                const std::string problem = citation_problem(pages[file], file, names);
+                const int line = p.line_at[size_t(it->position(2))];
+                if (!problem.empty()) out.push_back({f + ":" + std::to_string(line), problem});
+            }
+    return out;
+}
+
+const Repo& repo() {
+    static const Repo r = read_repo(fw::test::source_dir());
+    return r;
+}
+
+void report(const std::vector<Problem>& problems) {
+    for (const Problem& p : problems) FAIL_CHECK(p.where << ": " << p.what);
+}
+
+}  // namespace
+
+TEST_CASE("grading's rooms include only their own room and the rooms below it") {
+    MESSAGE(
+        "rooms, lowest first: sandbox results run units judge report release platforms "
+        "commands; grading/main.cpp includes any; labs/NN_name/grading/*.cpp only units");
+    REQUIRE(repo().files.size() > 100);
+    report(room_problems(repo()));
+}
+
+TEST_CASE("framework and grading headers include no cycle") {
+    size_t headers = 0;
+    const std::vector<Problem> problems = cycle_problems(repo(), headers);
+    MESSAGE(headers << " headers of framework/ and grading/");
+    CHECK(headers > 20);
+    report(problems);
+}
+
+TEST_CASE("every repository path cited in a comment or a Markdown page exists") {
+    size_t cited = 0;
+    const std::vector<Problem> problems = path_problems(repo(), cited);
+    MESSAGE(cited << " paths cited");
+    CHECK(cited > 100);
+    report(problems);
+}
+
+TEST_CASE("every docs section cited in a comment or a Markdown page is there") {
+    size_t cited = 0;
+    const std::vector<Problem> problems = heading_problems(repo(), cited);
+    MESSAGE(cited << " sections cited");
+    CHECK(cited > 20);
+    report(problems);
+}
