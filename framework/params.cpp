@@ -3,6 +3,7 @@
 #include <cxxabi.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -14,12 +15,6 @@
 namespace fw {
 
 namespace {
-
-std::string format_number(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 // "pipeline::Scene" for a type's name, as the compiler spells it.
 std::string type_name(std::type_index type) {
@@ -120,8 +115,8 @@ Param Param::color(std::string name, const std::string& hex_rrggbb) {
 
 Param& Param::range(double lo, double hi) {
     if (!(lo <= default_number && default_number <= hi))
-        throw Error("parameter '" + name + "': default " + format_number(default_number) +
-                    " is outside its range [" + format_number(lo) + ", " + format_number(hi) + "]");
+        throw Error("parameter '" + name + "': default " + number_text(default_number) +
+                    " is outside its range [" + number_text(lo) + ", " + number_text(hi) + "]");
     min = lo;
     max = hi;
     return *this;
@@ -153,7 +148,7 @@ std::string Param::default_text() const {
     switch (type) {
         case ParamType::Float:
         case ParamType::Int:
-            return format_number(default_number);
+            return number_text(default_number);
         case ParamType::Bool:
             return default_flag ? "true" : "false";
         case ParamType::Enum:
@@ -168,7 +163,7 @@ std::string Param::range_text() const {
     switch (type) {
         case ParamType::Float:
         case ParamType::Int: {
-            std::string r = "[" + format_number(min) + ", " + format_number(max) + "]";
+            std::string r = "[" + number_text(min) + ", " + number_text(max) + "]";
             if (type == ParamType::Int) r += " integer";
             return unit_text.empty() ? r : r + " " + unit_text;
         }
@@ -291,7 +286,7 @@ void ParamValues::set_assignment(const std::string& assignment) {
 void ParamValues::set_json(const std::string& name, const nlohmann::json& value) {
     if (value.is_string()) return set(name, value.get<std::string>());
     if (value.is_boolean()) return set(name, value.get<bool>() ? "true" : "false");
-    if (value.is_number()) return set(name, format_number(value.get<double>()));
+    if (value.is_number()) return set(name, number_text(value.get<double>()));
     throw UsageError("lab '" + lab_ + "', parameter '" + name + "': value " + value.dump() +
                      " must be a string, number or bool");
 }
@@ -345,7 +340,7 @@ std::string ParamValues::text(const std::string& name) const {
     switch (p.type) {
         case ParamType::Float:
         case ParamType::Int:
-            return format_number(v.number);
+            return number_text(v.number);
         case ParamType::Bool:
             return v.flag ? "true" : "false";
         case ParamType::Enum:
@@ -380,6 +375,17 @@ nlohmann::json ParamValues::to_json() const {
         }
     }
     return out;
+}
+
+nlohmann::json describe_param(const Param& p) {
+    nlohmann::json d = {{"name", p.name},          {"type", param_type_name(p.type)},
+                        {"help", p.help_text},     {"unit", p.unit_text},
+                        {"range", p.range_text()}, {"default", p.default_text()}};
+    if (p.type == ParamType::Float || p.type == ParamType::Int)
+        d.update({{"min", p.min}, {"max", p.max}, {"step", p.key_step()}});
+    if (p.type == ParamType::Enum) d["choices"] = p.choices;
+    if (p.shortcut) d["key"] = std::string(1, static_cast<char>(std::toupper(p.shortcut)));
+    return d;
 }
 
 }  // namespace fw

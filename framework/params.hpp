@@ -101,6 +101,11 @@ private:
                              std::vector<long long> values, long long def, std::type_index type);
 };
 
+// A parameter as `lab list --json` and `lab serve`'s page describe it: name,
+// type, help, unit, range and default; min, max and step for a number,
+// choices for a choice, and its key when it has one.
+nlohmann::json describe_param(const Param& p);
+
 // The resolved value of every parameter of one lab.
 class ParamValues {
 public:

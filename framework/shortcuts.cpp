@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "framework/text.hpp"
+
 namespace fw {
 
 namespace {
@@ -12,12 +14,6 @@ namespace {
 int key_code(const Param& p) { return std::toupper(static_cast<unsigned char>(p.shortcut)); }
 
 std::string key_name(const Param& p) { return std::string(1, static_cast<char>(key_code(p))); }
-
-std::string number_text(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 bool step_number(const Param& p, double& value, bool shift) {
     double next = value + (shift ? -p.key_step() : p.key_step());

@@ -32,6 +32,17 @@ std::string join(const Range& items, std::string_view sep, Proj proj = {}) {
 // argument-dependent lookup wherever <iomanip> is included.
 std::string quoted_label(const std::string& label);
 
+// A number as printf's %.*g writes it, with `digits` significant digits:
+//   number_text(0.5)            // "0.5"
+//   number_text(1.0 / 3, 7)     // "0.3333333"
+std::string number_text(double v, int digits = 6);
+
+// A number with at most `decimals` decimals, trailing zeros and a trailing
+// point dropped, and never "-0":
+//   trimmed_decimals(2.50, 2)   // "2.5"
+//   trimmed_decimals(-0.001, 2) // "0"
+std::string trimmed_decimals(double v, int decimals);
+
 // `s` as one word for /bin/sh: in single quotes, each ' written as '\''.
 //   shell_quote("it's")   // 'it'\''s'
 std::string shell_quote(std::string_view s);

@@ -11,12 +11,15 @@
 #include <utility>
 #include <vector>
 
+#include "framework/cli.hpp"
 #include "framework/error.hpp"
 #include "grading/commands/commands.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
 
 namespace {
+
+using fw::cli::Command;
 
 const char* const kBackendHelp =
     "auto|osmesa|egl (default $LAB_BACKEND, else auto: EGL, then OSMesa)";
@@ -44,12 +47,6 @@ CLI::Option* add_choice(CLI::App* app, const std::string& name, E& target, Choic
     };
     return app->add_option_function<std::string>(name, store, help)->check(CLI::IsMember(names));
 }
-
-// A subcommand and what runs it once its options are parsed.
-struct Command {
-    CLI::App* app;
-    std::function<int()> run;
-};
 
 Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     auto* grade = app.add_subcommand("grade", "Grade labs offscreen and write the reports");
@@ -138,21 +135,6 @@ Command add_autograde(CLI::App& app, grading::AutogradeOptions& a) {
     return {autograde, [&a] { return grading::autograde_command(a); }};
 }
 
-// Runs the chosen command; errors print as `course: error: ...`, exit 2.
-int run_chosen(const std::vector<Command>& commands) {
-    try {
-        for (const Command& command : commands)
-            if (*command.app) return command.run();
-    } catch (const fw::Error& e) {
-        std::fprintf(stderr, "course: error: %s\n", e.what());
-        return 2;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "course: internal error: %s\n", e.what());
-        return 2;
-    }
-    return 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -175,15 +157,7 @@ int main(int argc, char** argv) {
                                            add_prairielearn(app, prairielearn_out),
                                            add_autograde(app, autograde)};
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "course: %s\nRun 'course --help' for usage.\n", e.what());
-        return 2;
-    }
-    return run_chosen(commands);
+    // Every error of course, the set-up's included, exits with 2.
+    const auto usage = [](const fw::Error&) { return 2; };
+    return fw::cli::run(app, argc, argv, commands, "course", {usage, 2});
 }

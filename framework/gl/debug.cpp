@@ -100,43 +100,50 @@ std::string object_label(GLenum identifier, GLuint id) {
     return label;
 }
 
+namespace {
+
+struct EnumName {
+    GLenum value;
+    const char* name;
+};
+
+// Each enum's name written once, by the preprocessor.
+#define FW_ENUM_NAME(e) \
+    EnumName { e, #e }
+constexpr EnumName kEnumNames[] = {
+    // glGetError
+    FW_ENUM_NAME(GL_NO_ERROR),
+    FW_ENUM_NAME(GL_INVALID_ENUM),
+    FW_ENUM_NAME(GL_INVALID_VALUE),
+    FW_ENUM_NAME(GL_INVALID_OPERATION),
+    FW_ENUM_NAME(GL_INVALID_FRAMEBUFFER_OPERATION),
+    FW_ENUM_NAME(GL_OUT_OF_MEMORY),
+    FW_ENUM_NAME(GL_STACK_UNDERFLOW),
+    FW_ENUM_NAME(GL_STACK_OVERFLOW),
+    // glCheckFramebufferStatus
+    FW_ENUM_NAME(GL_FRAMEBUFFER_UNDEFINED),
+    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT),
+    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT),
+    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER),
+    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER),
+    FW_ENUM_NAME(GL_FRAMEBUFFER_UNSUPPORTED),
+    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE),
+    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS),
+    // Query targets (fw::Query)
+    FW_ENUM_NAME(GL_PRIMITIVES_GENERATED),
+    FW_ENUM_NAME(GL_SAMPLES_PASSED),
+    FW_ENUM_NAME(GL_ANY_SAMPLES_PASSED),
+    FW_ENUM_NAME(GL_ANY_SAMPLES_PASSED_CONSERVATIVE),
+    FW_ENUM_NAME(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN),
+    FW_ENUM_NAME(GL_TIME_ELAPSED),
+};
+#undef FW_ENUM_NAME
+
+}  // namespace
+
 std::string gl_enum_name(GLenum value) {
-    switch (value) {
-        case GL_NO_ERROR:
-            return "GL_NO_ERROR";
-        case GL_INVALID_ENUM:
-            return "GL_INVALID_ENUM";
-        case GL_INVALID_VALUE:
-            return "GL_INVALID_VALUE";
-        case GL_INVALID_OPERATION:
-            return "GL_INVALID_OPERATION";
-        case GL_INVALID_FRAMEBUFFER_OPERATION:
-            return "GL_INVALID_FRAMEBUFFER_OPERATION";
-        case GL_OUT_OF_MEMORY:
-            return "GL_OUT_OF_MEMORY";
-        case GL_STACK_UNDERFLOW:
-            return "GL_STACK_UNDERFLOW";
-        case GL_STACK_OVERFLOW:
-            return "GL_STACK_OVERFLOW";
-        case GL_FRAMEBUFFER_UNDEFINED:
-            return "GL_FRAMEBUFFER_UNDEFINED";
-        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
-            return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
-            return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
-            return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
-            return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-        case GL_FRAMEBUFFER_UNSUPPORTED:
-            return "GL_FRAMEBUFFER_UNSUPPORTED";
-        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
-            return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
-        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
-            return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-        default:
-            break;
-    }
+    for (const EnumName& e : kEnumNames)
+        if (e.value == value) return e.name;
     char buf[16];
     std::snprintf(buf, sizeof buf, "0x%04X", value);
     return buf;

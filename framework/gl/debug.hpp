@@ -37,8 +37,9 @@ std::vector<std::string> take_debug_messages();
 void set_object_label(GLenum identifier, GLuint id, const std::string& label);
 std::string object_label(GLenum identifier, GLuint id);
 
-// "GL_INVALID_ENUM" for error codes and the handful of other enums the
-// framework prints; "0x1234" for anything else.
+// "GL_INVALID_ENUM" for error codes, framebuffer statuses and query targets,
+// the enums the framework prints (one table, debug.cpp); "0x1234" for
+// anything else.
 std::string gl_enum_name(GLenum value);
 
 }  // namespace fw

@@ -10,27 +10,22 @@ namespace fw {
 
 namespace {
 
-struct TargetName {
-    GLenum target;
-    const char* name;
-};
-
-constexpr TargetName kTargets[] = {
-    {GL_PRIMITIVES_GENERATED, "GL_PRIMITIVES_GENERATED"},
-    {GL_SAMPLES_PASSED, "GL_SAMPLES_PASSED"},
-    {GL_ANY_SAMPLES_PASSED, "GL_ANY_SAMPLES_PASSED"},
-    {GL_ANY_SAMPLES_PASSED_CONSERVATIVE, "GL_ANY_SAMPLES_PASSED_CONSERVATIVE"},
-    {GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, "GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN"},
-    {GL_TIME_ELAPSED, "GL_TIME_ELAPSED"},
+// The targets a Query takes; their names come from gl_enum_name.
+constexpr GLenum kTargets[] = {
+    GL_PRIMITIVES_GENERATED,
+    GL_SAMPLES_PASSED,
+    GL_ANY_SAMPLES_PASSED,
+    GL_ANY_SAMPLES_PASSED_CONSERVATIVE,
+    GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN,
+    GL_TIME_ELAPSED,
 };
 
 }  // namespace
 
 Query::Query(GLenum target, std::string label) : target_(target), label_(std::move(label)) {
-    const auto is_target = [target](const TargetName& t) { return t.target == target; };
-    if (std::none_of(std::begin(kTargets), std::end(kTargets), is_target))
+    if (std::find(std::begin(kTargets), std::end(kTargets), target) == std::end(kTargets))
         throw UsageError("Query target " + gl_enum_name(target) + " is not supported; use one of " +
-                         join(kTargets, ", ", &TargetName::name) +
+                         join(kTargets, ", ", gl_enum_name) +
                          (label_.empty() ? "" : " (query '" + label_ + "')"));
     GLuint id = 0;
     glGenQueries(1, &id);

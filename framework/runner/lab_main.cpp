@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "framework/checkpoints.hpp"
+#include "framework/cli.hpp"
 #include "framework/context.hpp"
 #include "framework/error.hpp"
 #include "framework/image.hpp"
@@ -29,12 +30,7 @@ void print_list(bool as_json) {
     json labs = json::array();
     for (const fw::RegisteredLab& lab : fw::registered_labs()) {
         json params = json::array();
-        for (const fw::Param& p : lab.info.params)
-            params.push_back({{"name", p.name},
-                              {"type", fw::param_type_name(p.type)},
-                              {"default", p.default_text()},
-                              {"range", p.range_text()},
-                              {"help", p.help_text}});
+        for (const fw::Param& p : lab.info.params) params.push_back(fw::describe_param(p));
         labs.push_back({{"number", lab.info.number},
                         {"name", lab.info.id},
                         {"title", lab.info.title},
@@ -138,17 +134,23 @@ void render_checkpoints(const std::vector<std::string>& lab_ids, const std::stri
 }
 
 // A subcommand and what runs it once its options are parsed.
-struct Command {
-    CLI::App* app;
-    std::function<void()> run;
-};
+using fw::cli::Command;
+
+// A command that returns when it has done its work: exit status 0.
+template <class F>
+std::function<int()> done(F f) {
+    return [f] {
+        f();
+        return 0;
+    };
+}
 
 const char* const kBackendHelp = "auto|osmesa|egl (default $LAB_BACKEND or auto)";
 
 Command add_list(CLI::App& app, bool& as_json) {
     auto* list = app.add_subcommand("list", "List the labs");
     list->add_flag("--json", as_json, "Print JSON with every parameter");
-    return {list, [&as_json] { print_list(as_json); }};
+    return {list, done([&as_json] { print_list(as_json); })};
 }
 
 struct CheckpointsArgs {
@@ -160,7 +162,7 @@ Command add_checkpoints(CLI::App& app, CheckpointsArgs& a) {
     auto* checkpoints = app.add_subcommand("checkpoints", "List a lab's checkpoints");
     checkpoints->add_option("LAB", a.lab, "Lab name")->required();
     checkpoints->add_flag("--json", a.json, "Print JSON");
-    return {checkpoints, [&a] { print_checkpoints(fw::find_lab(a.lab), a.json); }};
+    return {checkpoints, done([&a] { print_checkpoints(fw::find_lab(a.lab), a.json); })};
 }
 
 Command add_render(CLI::App& app, RenderArgs& a) {
@@ -173,7 +175,7 @@ Command add_render(CLI::App& app, RenderArgs& a) {
     render_cmd->add_option("-o,--output", a.output, "PNG file to write")->required();
     render_cmd->add_option("--depth-out", a.depth_out, "Write window-space depth as PFM");
     render_cmd->add_option("--stats", a.stats, "Write frame statistics as JSON");
-    return {render_cmd, [&a] { render(a); }};
+    return {render_cmd, done([&a] { render(a); })};
 }
 
 struct RenderCheckpointsArgs {
@@ -187,7 +189,7 @@ Command add_render_checkpoints(CLI::App& app, RenderCheckpointsArgs& a) {
     render_cps->add_option("LAB", a.labs, "Lab names");
     render_cps->add_option("--out", a.out, "Directory to write into (default ./renders)");
     render_cps->add_option("--backend", a.backend, kBackendHelp);
-    return {render_cps, [&a] { render_checkpoints(a.labs, a.out, a.backend); }};
+    return {render_cps, done([&a] { render_checkpoints(a.labs, a.out, a.backend); })};
 }
 
 struct GradeChildArgs {
@@ -201,7 +203,7 @@ Command add_grade_child(CLI::App& app, GradeChildArgs& a) {
     grade_child->add_option("--job", a.job, "Job file (JSON)")->required();
     grade_child->add_option("--out", a.out, "Directory for the outputs")->required();
     grade_child->add_option("--backend", a.backend, "auto|osmesa|egl");
-    return {grade_child, [&a] { fw::grade_child(a.job, a.out, a.backend); }};
+    return {grade_child, done([&a] { fw::grade_child(a.job, a.out, a.backend); })};
 }
 
 struct RunArgs {
@@ -237,7 +239,7 @@ Command add_run(CLI::App& app, RunArgs& a) {
     run->add_option("--frames", a.frames, "Quit after N frames")->check(CLI::NonNegativeNumber);
     run->add_option("--screenshot", a.screenshot, "Save the last frame to this PNG");
     run->add_flag("--no-ui", a.no_ui, "Hide the parameter panel");
-    return {run, [&a] { run_in_window(a); }};
+    return {run, done([&a] { run_in_window(a); })};
 }
 
 struct ServeArgs {
@@ -254,26 +256,10 @@ Command add_serve(CLI::App& app, ServeArgs& a) {
                       "Address to listen on (default 127.0.0.1: this machine only)");
     serve->add_option("--size", a.size, "Frame size WxH until the page sets it (default 800x600)");
     serve->add_option("--backend", a.options.backend, kBackendHelp);
-    return {serve, [&a] {
+    return {serve, done([&a] {
                 fw::parse_size(a.size, a.options.width, a.options.height);
                 fw::serve(a.options);
-            }};
-}
-
-// Runs the chosen command; errors print as `lab: error: ...` with the exit
-// status their type implies.
-int run_chosen(const std::vector<Command>& commands) {
-    try {
-        for (const Command& command : commands)
-            if (*command.app) command.run();
-    } catch (const fw::Error& e) {
-        std::fprintf(stderr, "lab: error: %s\n", e.what());
-        return fw::exit_code_for(e);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "lab: internal error: %s\n", e.what());
-        return 1;
-    }
-    return 0;
+            })};
 }
 
 }  // namespace
@@ -298,17 +284,5 @@ int main(int argc, char** argv) {
                                            add_run(app, run_args),
                                            add_serve(app, serve_args)};
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "lab: %s\nRun 'lab --help' or 'lab %s --help' for usage.\n", e.what(),
-                     app.get_subcommands().empty() ? "COMMAND"
-                                                   : app.get_subcommands()[0]->get_name().c_str());
-        return 2;
-    }
-    return run_chosen(commands);
+    return fw::cli::run(app, argc, argv, commands, "lab", {fw::exit_code_for, 1});
 }

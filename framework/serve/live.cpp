@@ -20,17 +20,6 @@ using Clock = std::chrono::steady_clock;
 // How often a playing lab is drawn, at most: the page's refresh rate.
 constexpr std::chrono::milliseconds kPlayInterval{16};
 
-json describe_param(const Param& p) {
-    json d = {{"name", p.name},          {"type", param_type_name(p.type)},
-              {"help", p.help_text},     {"unit", p.unit_text},
-              {"range", p.range_text()}, {"default", p.default_text()}};
-    if (p.type == ParamType::Float || p.type == ParamType::Int)
-        d.update({{"min", p.min}, {"max", p.max}, {"step", p.key_step()}});
-    if (p.type == ParamType::Enum) d["choices"] = p.choices;
-    if (p.shortcut) d["key"] = std::string(1, static_cast<char>(std::toupper(p.shortcut)));
-    return d;
-}
-
 json describe_lab(const RegisteredLab& lab, const ContextInfo& context) {
     json params = json::array(), shortcuts = json::array(), checkpoints = json::array();
     for (const Param& p : lab.info.params) params.push_back(describe_param(p));

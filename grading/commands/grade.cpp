@@ -80,16 +80,11 @@ void prepare(const std::string& out, const std::vector<LabData>& all,
              "'; put the build where that user can read and execute it");
 }
 
-std::string score_text(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
 // The line `course grade` prints as a lab finishes, with the tail of its log
 // when its child failed.
 void print_progress(const LabResult& result) {
-    const std::string score = score_text(result.score()) + "/" + score_text(result.max_score());
+    const std::string score =
+        fw::number_text(result.score()) + "/" + fw::number_text(result.max_score());
     std::printf("%-16s %9s  %5.1f s  %s\n", result.lab.c_str(), score.c_str(), result.seconds,
                 result.status.text().c_str());
     if (!result.status.ok()) std::printf("%s", indented_tail(result.log, 12).c_str());

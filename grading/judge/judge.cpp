@@ -23,11 +23,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.7g", v);
-    return buf;
-}
+std::string num(double v) { return fw::number_text(v, 7); }
 
 // JSON with numbers at float precision, cut to `max` characters.
 std::string compact(const json& j, size_t max = 240) {

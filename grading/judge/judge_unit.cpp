@@ -28,17 +28,9 @@ const char* const kSameValuesNote =
     "The likely mistakes above give the same values on these cases, so any one of them may be "
     "the cause.";
 
-std::string exact(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", v);
-    return buf;
-}
+std::string exact(double v) { return fw::number_text(v, 9); }
 
-std::string tolerance_text(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.7g", v);
-    return buf;
-}
+std::string tolerance_text(double v) { return fw::number_text(v, 7); }
 
 // A value of unknown form as JSON, cut to kRawMax characters.
 std::string raw_text(const json& j) {
@@ -229,18 +221,8 @@ int unit_decimals(double tolerance) {
 std::string unit_number(double value, int decimals) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-    char buf[64];
-    if (std::fabs(value) >= 1e7) {
-        std::snprintf(buf, sizeof buf, "%.7g", value);
-        return buf;
-    }
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-    std::string s = buf;
-    if (s.find('.') != std::string::npos) {
-        s.erase(s.find_last_not_of('0') + 1);
-        if (s.back() == '.') s.pop_back();
-    }
-    return s == "-0" ? "0" : s;
+    if (std::fabs(value) >= 1e7) return fw::number_text(value, 7);
+    return fw::trimmed_decimals(value, decimals);
 }
 
 std::vector<std::string> matrix_rows(const json& m, int decimals) {

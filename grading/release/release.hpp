@@ -82,6 +82,16 @@ void require_new_output_dir(const std::filesystem::path& dir);
 // its mode. Throws fw::Error naming the paths.
 void copy_entry(const std::filesystem::path& from, const std::filesystem::path& to);
 
+// The modes of what course writes into a folder it makes: a script (0755)
+// and any other file (0644).
+constexpr std::filesystem::perms kExecutable =
+    std::filesystem::perms::owner_all | std::filesystem::perms::group_read |
+    std::filesystem::perms::group_exec | std::filesystem::perms::others_read |
+    std::filesystem::perms::others_exec;
+constexpr std::filesystem::perms kReadable =
+    std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+    std::filesystem::perms::group_read | std::filesystem::perms::others_read;
+
 // Writes `text` to `path` with `mode`, making its folders. Throws fw::Error
 // naming the path.
 void write_file(const std::filesystem::path& path, const std::string& text,

@@ -211,12 +211,7 @@ std::string first_line(const std::string& text) {
     return {};
 }
 
-std::string points(double value) {
-    std::string text = fixed(value, 2);
-    text.erase(text.find_last_not_of('0') + 1);
-    if (text.back() == '.') text.pop_back();
-    return text == "-0" ? "0" : text;
-}
+std::string points(double value) { return fw::trimmed_decimals(value, 2); }
 
 std::string in_dir(const std::string& out_dir, const std::string& relative) {
     std::filesystem::path path(relative);

@@ -22,6 +22,7 @@
 #include <thread>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/sandbox/isolation.hpp"
 #include "grading/sandbox/sandbox.hpp"
 
@@ -32,12 +33,6 @@ namespace grading {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string seconds_text(double s) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", s);
-    return buf;
-}
 
 // After fork() in a threaded program only async-signal-safe calls may run
 // until exec: no malloc, no stdio. These write a fixed message and the errno.
@@ -301,7 +296,7 @@ private:
 
     void check_limits() {
         if (elapsed() > limits_.timeout_seconds)
-            stop("timed out after " + seconds_text(limits_.timeout_seconds) + " s");
+            stop("timed out after " + fw::number_text(limits_.timeout_seconds) + " s");
         if (elapsed() > next_size_check_) {
             next_size_check_ = elapsed() + 0.25;
             if (directory_bytes(dir_) > limits_.work_dir_cap)

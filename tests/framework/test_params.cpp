@@ -7,6 +7,7 @@
 #include "framework/error.hpp"
 #include "framework/lab.hpp"
 #include "framework/params.hpp"
+#include "framework/text.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
@@ -36,6 +37,18 @@ bool contains(const std::string& s, const std::string& part) {
 }
 
 }  // namespace
+
+TEST_CASE("numbers are written one way in every message") {
+    CHECK(fw::number_text(0.5) == "0.5");
+    CHECK(fw::number_text(1.0 / 3.0) == "0.333333");
+    CHECK(fw::number_text(1.0 / 3.0, 7) == "0.3333333");
+    CHECK(fw::number_text(1e-5) == "1e-05");
+    CHECK(fw::trimmed_decimals(2.5, 2) == "2.5");
+    CHECK(fw::trimmed_decimals(3.0, 2) == "3");
+    CHECK(fw::trimmed_decimals(0.125, 2) == "0.12");
+    CHECK(fw::trimmed_decimals(-0.001, 2) == "0");
+    CHECK(fw::trimmed_decimals(1200.0, 0) == "1200");
+}
 
 TEST_CASE("defaults come from the declaration") {
     fw::ParamValues v("demo", &sample_params());

@@ -34,12 +34,6 @@ constexpr const char* kScripts[] = {"setup.sh", "run_autograder"};
 constexpr const char* kStudentFiles = "student_files.txt";
 constexpr const char* kStudentVersions = "student_versions";
 
-constexpr fs::perms kExecutable = fs::perms::owner_all | fs::perms::group_read |
-                                  fs::perms::group_exec | fs::perms::others_read |
-                                  fs::perms::others_exec;
-constexpr fs::perms kReadable =
-    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read;
-
 // What the folder will hold, read and checked before anything is written.
 struct FolderPlan {
     std::vector<std::string> files;  // of the repository

@@ -32,12 +32,6 @@ constexpr const char* kTemplates = "grading/platforms/prairielearn";
 constexpr const char* kFolder = "gl-labs";  // in serverFilesCourse/
 constexpr const char* kImage = "ACCOUNT/gl-labs-grader";
 
-constexpr fs::perms kExecutable = fs::perms::owner_all | fs::perms::group_read |
-                                  fs::perms::group_exec | fs::perms::others_read |
-                                  fs::perms::others_exec;
-constexpr fs::perms kReadable =
-    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read;
-
 // What the folder will hold, read and checked before anything is written.
 struct Plan {
     std::vector<std::string> files;  // of the repository
