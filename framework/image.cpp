@@ -126,27 +126,13 @@ libdeflate_compressor* compressor(int level) {
     return held.c;
 }
 
-}  // namespace
-
-// The PNG container written here, its pixels compressed by libdeflate, in
-// the smallest colour type that holds every pixel exactly (grey, RGB or
-// RGBA), each row with the "up" filter: on the course's frames the fastest
-// of the encoders bench/bench_png compares, and the smallest files of the
-// fast ones (a difference image is grey, most frames are opaque).
-std::string encode_png(const Image& img, int level) {
-    check_encodable(img, "PNG");
+// The rows of `img` as PNG filters them, top row first (PNG's order; the
+// image is stored bottom first), each with the "up" filter, in `channels`
+// (4: RGBA, 3: RGB, 1: grey). RGBA rows are filtered where they lie; grey and
+// RGB ones are packed first, into two buffers that take turns.
+std::vector<std::uint8_t> up_filtered_rows(const Image& img, int channels) {
     const int w = img.width, h = img.height;
-    unsigned opaque = 1, grey = 1;
-    for (const Rgba8& p : img.pixels) {
-        opaque &= p.a == 255;
-        grey &= (p.r == p.g) & (p.g == p.b);
-    }
-    const int channels = !opaque ? 4 : grey ? 1 : 3;
-    const std::uint8_t color_type = !opaque ? 6 : grey ? 0 : 2;
     const size_t row = static_cast<size_t>(w) * channels;
-    // Filtered rows, top row first (PNG's order; the image is stored bottom
-    // first). RGBA rows are filtered where they lie; grey and RGB ones are
-    // packed first, into two buffers that take turns.
     std::vector<std::uint8_t> filtered((row + 1) * h);
     const std::vector<std::uint8_t> zeros(row, 0);
     std::vector<std::uint8_t> packed[2];
@@ -172,16 +158,41 @@ std::string encode_png(const Image& img, int level) {
         for (size_t i = 0; i < row; ++i) out[1 + i] = static_cast<std::uint8_t>(here[i] - above[i]);
         above = here;
     }
+    return filtered;
+}
+
+// `data` as one zlib stream, by libdeflate at `level`.
+std::string zlib_stream(const std::vector<std::uint8_t>& data, int level) {
     libdeflate_compressor* c = compressor(level);
     if (!c) throw Error("cannot encode a PNG: out of memory for the compressor");
-    std::string idat(libdeflate_zlib_compress_bound(c, filtered.size()), '\0');
+    std::string stream(libdeflate_zlib_compress_bound(c, data.size()), '\0');
     const size_t size =
-        libdeflate_zlib_compress(c, filtered.data(), filtered.size(), idat.data(), idat.size());
+        libdeflate_zlib_compress(c, data.data(), data.size(), stream.data(), stream.size());
     if (size == 0) throw Error("cannot encode a PNG: the compressed pixels did not fit");
-    idat.resize(size);
+    stream.resize(size);
+    return stream;
+}
+
+}  // namespace
+
+// The PNG container written here, its pixels compressed by libdeflate, in
+// the smallest colour type that holds every pixel exactly (grey, RGB or
+// RGBA), each row with the "up" filter: on the course's frames the fastest
+// of the encoders bench/bench_png compares, and the smallest files of the
+// fast ones (a difference image is grey, most frames are opaque).
+std::string encode_png(const Image& img, int level) {
+    check_encodable(img, "PNG");
+    unsigned opaque = 1, grey = 1;
+    for (const Rgba8& p : img.pixels) {
+        opaque &= p.a == 255;
+        grey &= (p.r == p.g) & (p.g == p.b);
+    }
+    const int channels = !opaque ? 4 : grey ? 1 : 3;
+    const std::uint8_t color_type = !opaque ? 6 : grey ? 0 : 2;
+    const std::string idat = zlib_stream(up_filtered_rows(img, channels), level);
     std::string ihdr;
-    put_be32(ihdr, static_cast<std::uint32_t>(w));
-    put_be32(ihdr, static_cast<std::uint32_t>(h));
+    put_be32(ihdr, static_cast<std::uint32_t>(img.width));
+    put_be32(ihdr, static_cast<std::uint32_t>(img.height));
     // 8 bits a channel, the colour type, deflate, filters per row, no interlace.
     ihdr += {8, static_cast<char>(color_type), 0, 0, 0};
     std::string bytes("\x89PNG\r\n\x1a\n", 8);

@@ -109,63 +109,67 @@ void LiveLab::run(const RegisteredLab& lab, Backend backend) {
     renderer_ = nullptr;
 }
 
+bool LiveLab::await_change(Clock::time_point& next_due, double& time) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    auto due = [this] { return stopping_ || version_ != drawn_version_; };
+    if (players_ > 0 || animates(params_))
+        wake_.wait_until(lock, next_due, due);
+    else
+        wake_.wait(lock, due);
+    next_due = std::max(next_due + kPlayInterval, Clock::now());
+    if (stopping_) return false;
+    time = players_ > 0 || animates(params_)
+               ? std::chrono::duration<double>(Clock::now() - epoch_).count()
+               : 0.0;
+    return true;
+}
+
+// Called with lab_mutex_ held.
+LiveLab::Job LiveLab::take_input(double time) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const Frame frame{width_, height_, time};
+    for (const auto& [dx, dy] : drags_) renderer_->lab().on_drag(params_, frame, dx, dy);
+    for (double steps : scrolls_) renderer_->lab().on_scroll(params_, frame, steps);
+    drags_.clear();
+    scrolls_.clear();
+    if (reload_) {
+        reload_ = false;
+        shader_errors_ = renderer_->programs().reload_all();
+    }
+    return {params_, width_, height_, version_, time};
+}
+
+// Called with lab_mutex_ held.
+std::shared_ptr<LiveFrame> LiveLab::draw(const Job& job) {
+    auto frame = std::make_shared<LiveFrame>();
+    try {
+        RenderOutput out = renderer_->render(job.params, job.width, job.height, job.time, false);
+        frame->render_ms = out.stats.value("render_ms", 0.0);
+        frame->stats = std::move(out.stats);
+        frame->jpeg = encode_jpeg(out.color, 85);
+        frame->color = std::move(out.color);
+    } catch (const std::exception& e) {
+        // The last good frame stays on the page, with the reason beside it.
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (frame_) *frame = *frame_;
+        frame->error = e.what();
+    }
+    frame->params = job.params.to_json();
+    frame->version = job.version;
+    return frame;
+}
+
 void LiveLab::render_loop() {
     std::uint64_t seq = 0;
     Clock::time_point next_due = Clock::now();  // while playing: the next frame's start
-    for (;;) {
-        ParamValues params;
-        int width = 0, height = 0;
-        std::uint64_t version = 0;
-        double time = 0.0;
-        {
-            std::unique_lock<std::mutex> lock(mutex_);
-            auto due = [this] { return stopping_ || version_ != drawn_version_; };
-            if (players_ > 0 || animates(params_))
-                wake_.wait_until(lock, next_due, due);
-            else
-                wake_.wait(lock, due);
-            next_due = std::max(next_due + kPlayInterval, Clock::now());
-            if (stopping_) return;
-            if (players_ > 0 || animates(params_))
-                time = std::chrono::duration<double>(Clock::now() - epoch_).count();
-        }
+    double time = 0.0;
+    while (await_change(next_due, time)) {
         std::lock_guard<std::mutex> lab_lock(lab_mutex_);
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            const Frame frame{width_, height_, time};
-            for (const auto& [dx, dy] : drags_) renderer_->lab().on_drag(params_, frame, dx, dy);
-            for (double steps : scrolls_) renderer_->lab().on_scroll(params_, frame, steps);
-            drags_.clear();
-            scrolls_.clear();
-            if (reload_) {
-                reload_ = false;
-                shader_errors_ = renderer_->programs().reload_all();
-            }
-            params = params_;
-            width = width_;
-            height = height_;
-            version = version_;
-        }
-        auto frame = std::make_shared<LiveFrame>();
-        std::string error;
-        try {
-            RenderOutput out = renderer_->render(params, width, height, time, false);
-            frame->render_ms = out.stats.value("render_ms", 0.0);
-            frame->stats = std::move(out.stats);
-            frame->jpeg = encode_jpeg(out.color, 85);
-            frame->color = std::move(out.color);
-        } catch (const std::exception& e) {
-            // The last good frame stays on the page, with the reason beside it.
-            error = e.what();
-            std::lock_guard<std::mutex> lock(mutex_);
-            if (frame_) *frame = *frame_;
-        }
-        frame->params = params.to_json();
+        std::shared_ptr<LiveFrame> frame = draw(take_input(time));
         std::lock_guard<std::mutex> lock(mutex_);
         frame->seq = ++seq;
-        frame->version = version;
-        render_error_ = error;
-        drawn_version_ = version;
+        render_error_ = frame->error;
+        drawn_version_ = frame->version;
         frame_ = std::move(frame);
         framed_.notify_all();
     }

@@ -35,6 +35,9 @@ struct LiveFrame {
     double render_ms = 0.0;
     nlohmann::json stats;   // lab render's --stats fields
     nlohmann::json params;  // the values it was drawn with
+    // Why the newest change could not be drawn (then this is the last good
+    // frame); empty when it was.
+    std::string error;
 };
 
 class LiveLab {
@@ -78,6 +81,18 @@ public:
 private:
     void run(const RegisteredLab& lab, Backend backend);
     void render_loop();
+    // The render thread's steps: wait until something is to be drawn (false:
+    // stopping), with the lab's time when it animates; hand the input that
+    // came meanwhile to the lab and take what to draw; draw it.
+    struct Job {
+        ParamValues params;
+        int width = 0, height = 0;
+        std::uint64_t version = 0;
+        double time = 0.0;
+    };
+    bool await_change(std::chrono::steady_clock::time_point& next_due, double& time);
+    Job take_input(double time);
+    std::shared_ptr<LiveFrame> draw(const Job& job);
     std::uint64_t change(const std::function<void(ParamValues&)>& edit);
 
     mutable std::mutex mutex_;

@@ -318,6 +318,52 @@ void check_host(const std::string& host) {
                          "or 0.0.0.0 (every network interface, as in a container)");
 }
 
+// CivetWeb listening on `ports` ("127.0.0.1:8080") with the page's and the
+// WebSocket's handlers; throws fw::EnvironmentError when it cannot.
+mg_context* start_civetweb(const std::string& ports, Server& server) {
+    mg_init_library(0);
+    if (!mg_check_feature(16)) {
+        mg_exit_library();
+        throw EnvironmentError("this CivetWeb library was built without WebSocket support");
+    }
+    // tcp_nodelay: a frame's last bytes and an ack go out at once, not after
+    // the peer's delayed acknowledgement (40 ms and more per change).
+    const char* mg_options[] = {
+        "listening_ports", ports.c_str(), "num_threads", "32",   "request_timeout_ms",
+        "10000",           "tcp_nodelay", "1",           nullptr};
+    mg_callbacks callbacks{};
+    mg_context* ctx = mg_start(&callbacks, &server, mg_options);
+    if (!ctx) {
+        mg_exit_library();
+        throw EnvironmentError("cannot listen on " + ports +
+                               ": the port is in use or the address is not this machine's; "
+                               "choose another with --port N");
+    }
+    mg_set_websocket_handler(ctx, "/ws", ws_connect, ws_ready, ws_data, ws_close, &server);
+    mg_set_request_handler(ctx, "/", http, &server);
+    return ctx;
+}
+
+// The clients' senders end first (they use the connections and the lab);
+// then CivetWeb closes the connections; what its close handlers did not take
+// is freed here.
+void stop_civetweb(mg_context* ctx, LiveLab& live, Server& server) {
+    live.stop();
+    {
+        std::lock_guard<std::mutex> lock(server.clients_mutex);
+        for (Client* c : server.clients) c->closing = true;
+        for (Client* c : server.clients)
+            if (c->sender.joinable()) c->sender.join();
+    }
+    mg_stop(ctx);
+    {
+        std::lock_guard<std::mutex> lock(server.clients_mutex);
+        for (Client* c : server.clients) delete c;
+        server.clients.clear();
+    }
+    mg_exit_library();
+}
+
 }  // namespace
 
 void serve(const ServeOptions& options) {
@@ -339,29 +385,10 @@ void serve(const ServeOptions& options) {
     LiveLab live(lab, backend, options.width, options.height);
     Server server(live, lab.info.id);
 
-    mg_init_library(0);
-    if (!mg_check_feature(16)) {
-        mg_exit_library();
-        throw EnvironmentError("this CivetWeb library was built without WebSocket support");
-    }
     const bool v6 = options.host.find(':') != std::string::npos;
     const std::string ports =
         (v6 ? "[" + options.host + "]" : options.host) + ":" + std::to_string(options.port);
-    // tcp_nodelay: a frame's last bytes and an ack go out at once, not after
-    // the peer's delayed acknowledgement (40 ms and more per change).
-    const char* mg_options[] = {
-        "listening_ports", ports.c_str(), "num_threads", "32",   "request_timeout_ms",
-        "10000",           "tcp_nodelay", "1",           nullptr};
-    mg_callbacks callbacks{};
-    mg_context* ctx = mg_start(&callbacks, &server, mg_options);
-    if (!ctx) {
-        mg_exit_library();
-        throw EnvironmentError("cannot listen on " + ports +
-                               ": the port is in use or the address is not this machine's; "
-                               "choose another with --port N");
-    }
-    mg_set_websocket_handler(ctx, "/ws", ws_connect, ws_ready, ws_data, ws_close, &server);
-    mg_set_request_handler(ctx, "/", http, &server);
+    mg_context* ctx = start_civetweb(ports, server);
 
     mg_server_port port{};
     const int port_count = mg_get_server_ports(ctx, 1, &port);
@@ -378,23 +405,7 @@ void serve(const ServeOptions& options) {
     sigwait(&stop_signals, &signal);
     std::printf("lab serve: %s, stopping\n", signal == SIGINT ? "interrupted" : "terminated");
     std::fflush(stdout);
-    // The clients' senders end first (they use the connections and the
-    // lab); then CivetWeb closes the connections; what its close handlers
-    // did not take is freed here.
-    live.stop();
-    {
-        std::lock_guard<std::mutex> lock(server.clients_mutex);
-        for (Client* c : server.clients) c->closing = true;
-        for (Client* c : server.clients)
-            if (c->sender.joinable()) c->sender.join();
-    }
-    mg_stop(ctx);
-    {
-        std::lock_guard<std::mutex> lock(server.clients_mutex);
-        for (Client* c : server.clients) delete c;
-        server.clients.clear();
-    }
-    mg_exit_library();
+    stop_civetweb(ctx, live, server);
 }
 
 }  // namespace fw

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <random>
@@ -98,92 +99,122 @@ std::string backend_name(const GradeOptions& options) {
                                          : "auto";
 }
 
+// --shader-cache: the directory each lab's child starts from a copy of.
+ShaderCache shader_cache_of(const GradeOptions& options) {
+    ShaderCache cache;
+    if (options.shader_cache.empty()) return cache;
+    if (!fs::is_directory(options.shader_cache))
+        throw fw::UsageError("--shader-cache " + options.shader_cache +
+                             ": no such directory; make it with course warm-cache");
+    cache.dir = fs::absolute(options.shader_cache).string();
+    return cache;
+}
+
+// --sandbox strict: every layer but --run-as, or no grading at all.
+void require_every_layer(const std::vector<SandboxLayer>& layers) {
+    std::vector<std::string> missing;
+    for (const SandboxLayer& layer : layers)
+        if (!layer.active && layer.name != "--run-as")
+            missing.push_back(layer.name + ": " + layer.detail);
+    if (!missing.empty())
+        throw fw::EnvironmentError(
+            "--sandbox strict: not grading, because these layers of the sandbox cannot be "
+            "used here: " +
+            fw::join(missing, "; ") +
+            ". Run course as root with CAP_SYS_ADMIN and a cgroup hierarchy it may write, "
+            "or grade with --sandbox auto");
+}
+
+// What one lab's child is run with, the same for every lab of a run.
+struct ChildSetup {
+    std::string lab_binary, backend, out;
+    ChildLimits limits;
+    const RunAsUser* user = nullptr;
+    ShaderCache cache;
+    unsigned seed = 0;
+};
+
+// One lab: planned here, on the lab's worker, while other labs' children
+// run (its unit checks' random arguments, seeded by the run's seed and the
+// lab, are thousands of values), run in its child, then judged on as many
+// threads as `threads()` says when the child is done.
+LabResult grade_lab(const LabData& lab, const ChildSetup& setup,
+                    const std::function<int()>& threads) {
+    const LabPlan plan = plan_lab(lab, setup.seed, PlanFor::Grading);
+    LabChild child = run_lab_child(setup.lab_binary, plan.job, setup.backend, setup.limits,
+                                   setup.user, setup.cache);
+    LabResult result;
+    result.lab = lab.id;
+    result.status = child.run.status;
+    result.log = child.run.log;
+    result.seconds = child.run.seconds;
+    result.checks = judge_lab(lab, plan, *child.outputs, setup.out, threads());
+    if (child.run.ok()) {
+        const std::string shader_error = shader_error_status(*child.outputs);
+        if (!shader_error.empty()) result.status = LabStatus::failed(shader_error);
+    }
+    return result;
+}
+
+// Labs between their plan and their verdict: those sharing the cores.
+class InFlight {
+public:
+    explicit InFlight(std::atomic<int>& count) : count_(count) { ++count_; }
+    ~InFlight() { --count_; }
+    InFlight(const InFlight&) = delete;
+    InFlight& operator=(const InFlight&) = delete;
+
+private:
+    std::atomic<int>& count_;
+};
+
 }  // namespace
 
 int grade_command(const GradeOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    const ResultsFile results{options.format, options.results};
     const std::vector<LabData> all = discover_labs(source_root());
     std::vector<LabData> labs = select_labs(all, options.labs);
     for (LabData& lab : labs) parse_checks(lab);
-    const std::string lab_binary = resolve_lab_binary(options.lab_binary);
+    ChildSetup setup;
+    setup.lab_binary = resolve_lab_binary(options.lab_binary);
+    setup.backend = options.backend;
+    setup.out = options.out;
     std::optional<RunAsUser> user;
     if (!options.run_as.empty()) user = lookup_user(options.run_as);
-    const RunAsUser* as = user ? &*user : nullptr;
-    prepare(options.out, all, labs, lab_binary, as);
+    setup.user = user ? &*user : nullptr;
+    prepare(options.out, all, labs, setup.lab_binary, setup.user);
 
     // Orphans of a lab's child (a setsid() daemon) come back to course.
     if (!become_subreaper()) throw fw::Error("cannot make course a child subreaper (prctl)");
-    const unsigned seed = seed_from_env();
-    ChildLimits limits;
-    limits.timeout_seconds = options.timeout_seconds;
-    ShaderCache cache;
-    if (!options.shader_cache.empty()) {
-        if (!fs::is_directory(options.shader_cache))
-            throw fw::UsageError("--shader-cache " + options.shader_cache +
-                                 ": no such directory; make it with course warm-cache");
-        cache.dir = fs::absolute(options.shader_cache).string();
-    }
-
+    setup.seed = seed_from_env();
+    setup.cache = shader_cache_of(options);
+    setup.limits.timeout_seconds = options.timeout_seconds;
     GradeRun run;
     run.backend = backend_name(options);
     // The privileged layers, where this machine allows them (isolation.hpp).
     std::string namespaces_why, cgroups_why;
-    limits.namespaces = namespaces_usable(namespaces_why);
+    setup.limits.namespaces = namespaces_usable(namespaces_why);
     const std::unique_ptr<CgroupRoot> cgroups = CgroupRoot::open(cgroups_why);
-    limits.cgroups = cgroups.get();
-    limits.resident_cap = static_cast<std::uint64_t>(options.memory_mib) * kMiB;
-    run.sandbox = sandbox_layers(as, limits, namespaces_why, cgroups_why);
-    if (options.sandbox == GradeOptions::Sandbox::Strict) {
-        std::vector<std::string> missing;
-        for (const SandboxLayer& layer : run.sandbox)
-            if (!layer.active && layer.name != "--run-as")
-                missing.push_back(layer.name + ": " + layer.detail);
-        if (!missing.empty())
-            throw fw::EnvironmentError(
-                "--sandbox strict: not grading, because these layers of the sandbox cannot be "
-                "used here: " +
-                fw::join(missing, "; ") +
-                ". Run course as root with CAP_SYS_ADMIN and a cgroup hierarchy it may write, "
-                "or grade with --sandbox auto");
-    }
-    run.labs.resize(labs.size());
+    setup.limits.cgroups = cgroups.get();
+    setup.limits.resident_cap = static_cast<std::uint64_t>(options.memory_mib) * kMiB;
+    run.sandbox = sandbox_layers(setup.user, setup.limits, namespaces_why, cgroups_why);
+    if (options.sandbox == GradeOptions::Sandbox::Strict) require_every_layer(run.sandbox);
+
     // --jobs workers take labs in order; each lab is one child.
+    run.labs.resize(labs.size());
     std::mutex print_mutex;
-    // Labs between their plan and their verdict: those sharing the cores.
     std::atomic<int> in_flight{0};
-    struct InFlight {
-        std::atomic<int>& count;
-        explicit InFlight(std::atomic<int>& c) : count(c) { ++count; }
-        ~InFlight() { --count; }
-        InFlight(const InFlight&) = delete;
-        InFlight& operator=(const InFlight&) = delete;
-    };
+    const std::function<int()> threads = [&in_flight] { return judging_threads(in_flight); };
     parallel_for(labs.size(), options.jobs, [&](size_t i) {
         const InFlight flight(in_flight);
-        // Planned here, on the lab's worker, while other labs' children run:
-        // its unit checks' random arguments (seeded by the run's seed and the
-        // lab) are thousands of values.
-        const LabPlan plan = plan_lab(labs[i], seed, PlanFor::Grading);
-        LabChild child = run_lab_child(lab_binary, plan.job, options.backend, limits, as, cache);
-        LabResult& result = run.labs[i];
-        result.lab = labs[i].id;
-        result.status = child.run.status;
-        result.log = child.run.log;
-        result.seconds = child.run.seconds;
-        result.checks =
-            judge_lab(labs[i], plan, *child.outputs, options.out, judging_threads(in_flight));
-        if (child.run.ok()) {
-            const std::string shader_error = shader_error_status(*child.outputs);
-            if (!shader_error.empty()) result.status = LabStatus::failed(shader_error);
-        }
+        run.labs[i] = grade_lab(labs[i], setup, threads);
         if (!options.progress) return;
         std::lock_guard<std::mutex> lock(print_mutex);
-        print_progress(result);
+        print_progress(run.labs[i]);
     });
 
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_reports(run, options.out, results);
+    write_reports(run, options.out, {options.format, options.results});
     std::printf("%s", summary_table(run).c_str());
     return run.passed() ? 0 : 1;
 }

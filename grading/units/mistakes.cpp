@@ -248,97 +248,111 @@ Recognised recognise_mistakes(const ReferenceUnit& ref, const std::vector<UnitFa
     return out;
 }
 
-std::string likely_mistake(const ReferenceUnit& ref, const Explanation& e) {
+namespace {
+
+// "your matrix", "your J (matrix [1] of the list)": what a sentence is about.
+std::string subject(const ReferenceUnit& ref, const Explanation& e) {
     const ValueShape& s = ref.shape;
-    const bool matrix = s.kind == ValueShape::Kind::Matrix;
-    const std::string noun = matrix                               ? "matrix"
+    const std::string noun = s.kind == ValueShape::Kind::Matrix   ? "matrix"
                              : s.kind == ValueShape::Kind::Vector ? "vector"
                                                                   : "result";
-    std::string what = "your " + noun;
-    if (s.list && e.element >= 0) {
-        const size_t k = static_cast<size_t>(e.element);
-        const std::string index = "[" + std::to_string(k) + "]";
-        what = k < ref.element_names.size()
-                   ? "your " + ref.element_names[k] + " (" + noun + " " + index + " of the list)"
-                   : "your " + noun + " " + index + " of the list";
-    }
+    if (!s.list || e.element < 0) return "your " + noun;
+    const size_t k = static_cast<size_t>(e.element);
+    const std::string index = "[" + std::to_string(k) + "]";
+    return k < ref.element_names.size()
+               ? "your " + ref.element_names[k] + " (" + noun + " " + index + " of the list)"
+               : "your " + noun + " " + index + " of the list";
+}
+
+// "the angle", "every angle", "the angle in argument 2".
+std::string angle_words(const ReferenceUnit& ref, const Explanation& e) {
     int angle_count = 0;
     for (const ArgDomain& d : ref.domains) angle_count += d.degrees ? 1 : 0;
-    const std::string angle = angle_count <= 1 ? "the angle"
-                              : e.argument < 0
-                                  ? "every angle"
-                                  : "the angle in argument " + std::to_string(e.argument + 1);
-    const int n = s.columns;
-    std::string sentence;
-    switch (e.mistake) {
+    if (angle_count <= 1) return "the angle";
+    return e.argument < 0 ? "every angle"
+                          : "the angle in argument " + std::to_string(e.argument + 1);
+}
+
+// What follows the subject for the mistakes told without figures; null for
+// the others.
+const char* plain_cause(Mistake m) {
+    switch (m) {
         case Mistake::Transpose:
-            sentence = what +
-                       " is the transpose of the expected one (rows and columns swapped): GLM's "
-                       "m[c][r] is column c, row r, and glm::mat4(...) takes its numbers column "
-                       "by column, so a matrix typed in rows into a mat4 constructor comes out "
-                       "transposed; look at how you fill the matrix";
-            break;
+            return " is the transpose of the expected one (rows and columns swapped): GLM's "
+                   "m[c][r] is column c, row r, and glm::mat4(...) takes its numbers column "
+                   "by column, so a matrix typed in rows into a mat4 constructor comes out "
+                   "transposed; look at how you fill the matrix";
         case Mistake::Inverse:
-            sentence = what +
-                       " is the inverse of the expected one: it undoes the transformation "
-                       "instead of applying it (a translation by -t, a scale by 1/s, a rotation "
-                       "the other way, or for a view matrix the camera's placement in the world "
-                       "instead of the world seen from the camera); check the signs and which "
-                       "way your matrix maps points";
-            break;
+            return " is the inverse of the expected one: it undoes the transformation "
+                   "instead of applying it (a translation by -t, a scale by 1/s, a rotation "
+                   "the other way, or for a view matrix the camera's placement in the world "
+                   "instead of the world seen from the camera); check the signs and which "
+                   "way your matrix maps points";
         case Mistake::ReversedProduct:
-            sentence = what +
-                       " is the product of the right matrices in reverse order: with column "
-                       "vectors (p' = M p) the matrix next to the point acts first, so A * B "
-                       "applies B first and differs from B * A; check the order of your "
-                       "multiplications";
-            break;
-        case Mistake::RadiansForDegrees:
-            sentence = what + " is the expected one for " + angle +
-                       " times pi/180: an angle already in radians was used where degrees "
-                       "were meant (converted twice, or glm::radians(angle) passed to a "
-                       "function that takes degrees); convert degrees to radians once, right "
-                       "before sin, cos or tan";
-            break;
-        case Mistake::DegreesForRadians:
-            sentence = what + " is the expected one for " + angle +
-                       " read as radians: an angle in degrees reached sin, cos, tan or a GLM "
-                       "function that takes radians without conversion; convert it with "
-                       "glm::radians(angle) first";
-            break;
-        case Mistake::FlippedAngle:
-            sentence = what + " is the expected one for " + angle +
-                       " negated: a sign is flipped, typically the minus on the wrong sin term "
-                       "(a positive angle turns counter-clockwise seen from the axis' positive "
-                       "end); check the signs of the sin entries";
-            break;
-        case Mistake::TranslationInBottomRow: {
-            std::string column, bottom;
-            for (int r = 0; r + 1 < n; ++r) {
-                column +=
-                    (r ? ", m[" : "m[") + std::to_string(n - 1) + "][" + std::to_string(r) + "]";
-                bottom += "0, ";
-            }
-            sentence = what +
-                       " has the translation in the bottom row instead of the last column: "
-                       "with column vectors (p' = M p, as in GLM and GLSL) the translation is "
-                       "the last column, GLM's " +
-                       column + ", and the bottom row stays (" + bottom +
-                       "1); put the translation into the last column";
-            break;
-        }
-        case Mistake::NotNormalised:
-            sentence = matrix ? what +
-                                    " is the expected one computed with a direction left "
-                                    "unnormalised (a rotation axis or a camera basis vector not "
-                                    "of length 1); normalise each direction with glm::normalize "
-                                    "before building the matrix from it"
-                              : what +
-                                    " points the right way but is not of length 1: a direction "
-                                    "that must be a unit vector was not normalised; apply "
-                                    "glm::normalize to it";
-            break;
+            return " is the product of the right matrices in reverse order: with column "
+                   "vectors (p' = M p) the matrix next to the point acts first, so A * B "
+                   "applies B first and differs from B * A; check the order of your "
+                   "multiplications";
+        default:
+            return nullptr;
     }
+}
+
+// What follows "is the expected one for <the angle>" for the angle mistakes;
+// null for the others.
+const char* angle_cause(Mistake m) {
+    switch (m) {
+        case Mistake::RadiansForDegrees:
+            return " times pi/180: an angle already in radians was used where degrees "
+                   "were meant (converted twice, or glm::radians(angle) passed to a "
+                   "function that takes degrees); convert degrees to radians once, right "
+                   "before sin, cos or tan";
+        case Mistake::DegreesForRadians:
+            return " read as radians: an angle in degrees reached sin, cos, tan or a GLM "
+                   "function that takes radians without conversion; convert it with "
+                   "glm::radians(angle) first";
+        case Mistake::FlippedAngle:
+            return " negated: a sign is flipped, typically the minus on the wrong sin term "
+                   "(a positive angle turns counter-clockwise seen from the axis' positive "
+                   "end); check the signs of the sin entries";
+        default:
+            return nullptr;
+    }
+}
+
+// The translation mistake, with the entries of an n x n matrix named.
+std::string translation_cause(int n) {
+    std::string column, bottom;
+    for (int r = 0; r + 1 < n; ++r) {
+        column += (r ? ", m[" : "m[") + std::to_string(n - 1) + "][" + std::to_string(r) + "]";
+        bottom += "0, ";
+    }
+    return " has the translation in the bottom row instead of the last column: with column "
+           "vectors (p' = M p, as in GLM and GLSL) the translation is the last column, GLM's " +
+           column + ", and the bottom row stays (" + bottom +
+           "1); put the translation into the last column";
+}
+
+std::string normalisation_cause(bool matrix) {
+    return matrix ? " is the expected one computed with a direction left unnormalised (a "
+                    "rotation axis or a camera basis vector not of length 1); normalise each "
+                    "direction with glm::normalize before building the matrix from it"
+                  : " points the right way but is not of length 1: a direction that must be a "
+                    "unit vector was not normalised; apply glm::normalize to it";
+}
+
+}  // namespace
+
+std::string likely_mistake(const ReferenceUnit& ref, const Explanation& e) {
+    std::string sentence = subject(ref, e);
+    if (const char* plain = plain_cause(e.mistake))
+        sentence += plain;
+    else if (const char* angle = angle_cause(e.mistake))
+        sentence += " is the expected one for " + angle_words(ref, e) + angle;
+    else if (e.mistake == Mistake::TranslationInBottomRow)
+        sentence += translation_cause(ref.shape.columns);
+    else
+        sentence += normalisation_cause(ref.shape.kind == ValueShape::Kind::Matrix);
     return "Likely mistake (" + std::string(mistake_id(e.mistake)) + "): " + sentence + ".";
 }
 
