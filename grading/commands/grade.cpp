@@ -114,7 +114,7 @@ ShaderCache shader_cache_of(const GradeOptions& options) {
 void require_every_layer(const std::vector<SandboxLayer>& layers) {
     std::vector<std::string> missing;
     for (const SandboxLayer& layer : layers)
-        if (!layer.active && layer.name != "--run-as")
+        if (!layer.active && layer.required_by_strict)
             missing.push_back(layer.name + ": " + layer.detail);
     if (!missing.empty())
         throw fw::EnvironmentError(

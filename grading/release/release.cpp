@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "framework/error.hpp"
+#include "grading/results/results.hpp"
 
 namespace fs = std::filesystem;
 
@@ -326,7 +327,9 @@ VisibleCheckpoints drop_hidden_checkpoints(const std::string& text, const std::s
         nlohmann::json entry = parse_json(text.substr(b, end - b), path);
         starts.push_back(with_comments_above(text, b));
         ends.push_back(end);
-        if (entry.is_object() && entry.value("visibility", std::string("visible")) == "hidden") {
+        if (entry.is_object() &&
+            entry.value("visibility", std::string(name_of(Visibility::Visible))) ==
+                name_of(Visibility::Hidden)) {
             result.dropped.push_back(entry.value("name", std::string("(unnamed)")));
         } else {
             kept.push_back(starts.size() - 1);

@@ -46,6 +46,9 @@ struct SandboxLayer {
     std::string name;  // "seccomp filter", "namespaces", ...
     bool active = false;
     std::string detail;  // what it does, or why it is not used
+    // Whether --sandbox strict needs it: every layer but --run-as, which is
+    // the operator's choice, not the machine's.
+    bool required_by_strict = true;
 };
 
 }  // namespace grading

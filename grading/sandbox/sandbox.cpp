@@ -233,10 +233,11 @@ std::vector<SandboxLayer> sandbox_layers(const RunAsUser* user, const ChildLimit
                               std::to_string(kRunAsProcesses) +
                               (limits.cgroups ? ""
                                               : "; every process of " + user->name +
-                                                    " is killed after each lab (no cgroup here)")});
+                                                    " is killed after each lab (no cgroup here)"),
+                          false});
     else
-        layers.push_back(
-            {"--run-as", false, "the labs run as course's own user (no --run-as USER given)"});
+        layers.push_back({"--run-as", false,
+                          "the labs run as course's own user (no --run-as USER given)", false});
     if (limits.namespaces)
         layers.push_back({"namespaces", true,
                           "new PID, network (loopback only), mount and IPC namespaces: the lab "
