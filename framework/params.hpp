@@ -1,19 +1,24 @@
 // A lab's parameters, declared once. The command line (`--set name=value`),
 // the window's panel and keyboard shortcuts, the checkpoints, `lab list` and
-// the stats all read this one declaration.
+// the stats all read this one declaration. Each parameter's name is written
+// once, in a typed handle, and the lab names the parameter through it:
 //
 //   enum class Scene { Order, Indexed };
 //   constexpr fw::Choice<Scene> kScenes[] = {{Scene::Order, "order"}, {Scene::Indexed, "indexed"}};
+//   constexpr fw::ParamId<Scene> kScene{"scene"};
+//   constexpr fw::ParamId<float> kFov{"fov"};
+//   constexpr fw::ParamId<bool> kDepthTest{"depth_test"};
 //
-//   fw::Param::choice("scene", kScenes, Scene::Order).help("which scene").key('S'),
-//   fw::Param::number("fov", 60).range(10, 150).unit("deg").key('F'),
-//   fw::Param::boolean("depth_test", true).key('D'),
+//   fw::Param::choice(kScene, kScenes, Scene::Order).help("which scene").key('S'),
+//   fw::Param::number(kFov, 60).range(10, 150).unit("deg").key('F'),
+//   fw::Param::boolean(kDepthTest, true).key('D'),
 //
-// and in draw():  switch (params.get<Scene>("scene")) { case Scene::Order: ... }
+// and in draw():  switch (params[kScene]) { case Scene::Order: ... }
 //
-// A choice is bound to a C++ enum, so the lab compares enum values, never
-// strings: a misspelt value is a compile error, and a declaration whose
-// default is not among its choices throws when the lab is registered.
+// A misspelt handle is a compile error, and so is reading a parameter as
+// another type than its handle's. A choice is bound to a C++ enum, so the
+// lab compares enum values, never strings, and a declaration whose default
+// is not among its choices throws when the lab is registered.
 #pragma once
 
 #include <array>
@@ -21,6 +26,7 @@
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <type_traits>
 #include <typeindex>
 #include <typeinfo>
 #include <vector>
@@ -32,6 +38,13 @@ namespace fw {
 template <class E>
 struct Choice {
     E value;
+    const char* name;
+};
+
+// A parameter's name and the C++ type of its value: float (a number), int,
+// bool, glm::vec3 (a colour) or the enum a choice is bound to.
+template <class T>
+struct ParamId {
     const char* name;
 };
 
@@ -71,6 +84,17 @@ struct Param {
         return choice_of(std::move(name), options.data(), N, def);
     }
     static Param color(std::string name, const std::string& hex_rrggbb);
+    // The same, named by a typed handle (the way labs declare them).
+    static Param number(ParamId<float> id, double def) { return number(id.name, def); }
+    static Param integer(ParamId<int> id, int def) { return integer(id.name, def); }
+    static Param boolean(ParamId<bool> id, bool def) { return boolean(id.name, def); }
+    static Param color(ParamId<glm::vec3> id, const std::string& hex_rrggbb) {
+        return color(id.name, hex_rrggbb);
+    }
+    template <class E, class Options>
+    static Param choice(ParamId<E> id, const Options& options, E def) {
+        return choice(std::string(id.name), options, def);
+    }
 
     Param& range(double lo, double hi);
     Param& step(double s);  // keyboard step; default (max - min) / 20, integers 1
@@ -130,9 +154,21 @@ public:
         return static_cast<E>(choice_value(name, typeid(E)));
     }
 
+    // A parameter's value through its typed handle (ParamId).
+    float operator[](ParamId<float> id) const { return number(id.name); }
+    int operator[](ParamId<int> id) const { return integer(id.name); }
+    bool operator[](ParamId<bool> id) const { return flag(id.name); }
+    glm::vec3 operator[](ParamId<glm::vec3> id) const { return color(id.name); }
+    template <class E>
+    E operator[](ParamId<E> id) const {
+        static_assert(std::is_enum_v<E>, "a ParamId is of float, int, bool, glm::vec3 or an enum");
+        return get<E>(id.name);
+    }
+
     // Sets a number parameter to `value` clamped to its declared range, as a
     // drag or scroll does; returns the value set.
     double set_clamped(const std::string& name, double value);
+    double set_clamped(ParamId<float> id, double value) { return set_clamped(id.name, value); }
 
     // Direct, validated access for the window panel.
     double& number_ref(const std::string& name);

@@ -50,6 +50,36 @@ TEST_CASE("numbers are written one way in every message") {
     CHECK(fw::trimmed_decimals(1200.0, 0) == "1200");
 }
 
+enum class Mode { A, B };
+constexpr fw::Choice<Mode> kModes[] = {{Mode::A, "a"}, {Mode::B, "b"}};
+
+TEST_CASE("typed handles name a parameter once and read it as its type") {
+    constexpr fw::ParamId<float> kFov{"fov"};
+    constexpr fw::ParamId<int> kCount{"count"};
+    constexpr fw::ParamId<bool> kOn{"on"};
+    constexpr fw::ParamId<glm::vec3> kTint{"tint"};
+    constexpr fw::ParamId<Mode> kMode{"mode"};
+    const std::vector<fw::Param> params = {
+        fw::Param::number(kFov, 60).range(10, 150), fw::Param::integer(kCount, 3).range(0, 9),
+        fw::Param::boolean(kOn, true), fw::Param::color(kTint, "ff0000"),
+        fw::Param::choice(kMode, kModes, Mode::B)};
+    fw::ParamValues p("demo", &params);
+    CHECK(p[kFov] == 60.0f);
+    CHECK(p[kCount] == 3);
+    CHECK(p[kOn]);
+    CHECK(p[kTint] == glm::vec3(1, 0, 0));
+    CHECK(p[kMode] == Mode::B);
+    p.set("mode", "a");
+    p.set("count", "7");
+    CHECK(p[kMode] == Mode::A);
+    CHECK(p[kCount] == 7);
+    CHECK(p.set_clamped(kFov, 500) == 150);
+    CHECK(p[kFov] == 150.0f);
+    // A handle whose name the lab does not declare fails as the name would.
+    constexpr fw::ParamId<float> kMissing{"missing"};
+    fw::test::check_mentions(fw::test::thrown([&] { (void)p[kMissing]; }), {"missing"});
+}
+
 TEST_CASE("defaults come from the declaration") {
     fw::ParamValues v("demo", &sample_params());
     CHECK(v.number("fov") == 60.0f);
