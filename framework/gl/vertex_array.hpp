@@ -1,12 +1,16 @@
 // fw::VertexArray: which buffer feeds which vertex attribute, in what format.
 //
 //   struct Vertex { glm::vec3 position; glm::vec3 color; };
-//   constexpr GLuint kPosition = 0, kColor = 1;   // layout(location = ...) in the shader
-//   fw::VertexArray vao({&vbo, fw::VertexLayout::of<Vertex>()
-//                                  .attr(kPosition, &Vertex::position)
-//                                  .attr(kColor, &Vertex::color), nullptr,
-//                        GL_UNSIGNED_INT, "quad"});
-//   vao.draw(GL_TRIANGLES, 6);
+//   // A_POSITION, A_COLOR: the locations in shaders/NN_name/shared.glsl
+//   fw::VertexArray vao(fw::VertexArrayDesc{
+//       .vertices = &vbo,
+//       .layout = fw::VertexLayout::of<Vertex>()
+//                     .attr(A_POSITION, &Vertex::position)
+//                     .attr(A_COLOR, &Vertex::color),
+//       .label = "quad",
+//   });
+//   glBindVertexArray(vao.id());  // a lab shows its binds and draws
+//   glDrawArrays(GL_TRIANGLES, 0, 6);
 //
 // The format of each attribute (components, type, offset, stride) is deduced
 // from the member it names, so it cannot disagree with the struct. Underneath

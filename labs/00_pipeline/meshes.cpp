@@ -53,6 +53,15 @@ std::vector<Vertex> expand_indices(const std::vector<Vertex>& vertices,
     return flat;
 }
 
+std::vector<glm::vec3> expand_quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    std::vector<Vertex> vertices;
+    for (const glm::vec3& p : {a, b, c, d}) vertices.push_back({p, glm::vec3(0.0f)});
+    std::vector<glm::vec3> positions;
+    for (const Vertex& v : expand_indices(vertices, {0, 1, 2, 0, 2, 3}))
+        positions.push_back(v.position);
+    return positions;
+}
+
 std::vector<Vertex> cube_vertices() {
     struct Face {
         glm::vec3 normal, color;

@@ -32,6 +32,11 @@ std::vector<GLuint> face_set_indices();   // {0,2,1, 1,3,4, 1,4,2, 2,4,5}
 std::vector<Vertex> expand_indices(const std::vector<Vertex>& vertices,
                                    const std::vector<GLuint>& indices);
 
+// Unit check `expand_quad` (checkpoints.json): the quad a b c d as the
+// triangles (a, b, c) and (a, c, d), 4 vertices and 6 indices that
+// expand_indices() turns into 6 positions; course compares them with its own.
+std::vector<glm::vec3> expand_quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
+
 // scene=culling: the cube [-0.5, 0.5]^3, 4 vertices per face (24) so that
 // each face has its own colour, and 36 indices, every face counter-clockwise
 // seen from outside. Face order and colours: +x red, -x cyan, +y green,

@@ -13,13 +13,13 @@
 // set_depth_test() and set_culling() below, expand_indices() in meshes.cpp,
 // and the pass-through in shaders/00_pipeline/pipeline.vert.
 #include <cstddef>
-#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #include <vector>
 
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
 #include "meshes.hpp"
+#include "scenes.hpp"
 // A_POSITION, A_COLOR: attribute locations, shared with pipeline.vert.
 #include "shared.glsl"
 
@@ -28,45 +28,6 @@ namespace pipeline {
 namespace {
 
 constexpr const char* kMvpUniform = "u_mvp";
-
-// The parameters' choices. Each enum is what draw() switches on; the names
-// are what --set, checkpoints.json and the window's panel use.
-enum class Scene { Order, Indexed, Primitives, Culling };
-constexpr fw::Choice<Scene> kScenes[] = {{Scene::Order, "order"},
-                                         {Scene::Indexed, "indexed"},
-                                         {Scene::Primitives, "primitives"},
-                                         {Scene::Culling, "culling"}};
-enum class First { Red, Blue };
-constexpr fw::Choice<First> kFirsts[] = {{First::Red, "red"}, {First::Blue, "blue"}};
-enum class Storage { Indexed, Flat };
-constexpr fw::Choice<Storage> kStorages[] = {{Storage::Indexed, "indexed"},
-                                             {Storage::Flat, "flat"}};
-// Each value is the GL primitive mode itself.
-enum class Primitive : GLenum {
-    Points = GL_POINTS,
-    Lines = GL_LINES,
-    LineStrip = GL_LINE_STRIP,
-    LineLoop = GL_LINE_LOOP,
-    Triangles = GL_TRIANGLES,
-    TriangleStrip = GL_TRIANGLE_STRIP,
-    TriangleFan = GL_TRIANGLE_FAN,
-};
-constexpr fw::Choice<Primitive> kPrimitives[] = {
-    {Primitive::Points, "points"},
-    {Primitive::Lines, "lines"},
-    {Primitive::LineStrip, "line_strip"},
-    {Primitive::LineLoop, "line_loop"},
-    {Primitive::Triangles, "triangles"},
-    {Primitive::TriangleStrip, "triangle_strip"},
-    {Primitive::TriangleFan, "triangle_fan"},
-};
-enum class Cull { None, Back, Front };
-constexpr fw::Choice<Cull> kCulls[] = {
-    {Cull::None, "none"}, {Cull::Back, "back"}, {Cull::Front, "front"}};
-
-// scene=culling's camera: on the +z axis looking at the cube's centre.
-const glm::vec3 kEye{0.0f, 0.0f, 3.0f};
-constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
 
 // With the vertex array bound: where each vertex's attributes are in
 // `vertices`, a buffer of Vertex structs (meshes.hpp: position, then colour,
@@ -154,24 +115,6 @@ fw::VertexArray make_vertex_array(const std::string& label, const fw::Buffer& ve
     return vao;
 }
 
-// Unit check `expand_quad` (checkpoints.json): the quad a b c d as the
-// triangles (a, b, c) and (a, c, d), 4 vertices and 6 indices that
-// expand_indices() turns into 6 positions; course compares them with its own.
-std::vector<glm::vec3> expand_quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
-    std::vector<Vertex> vertices;
-    for (const glm::vec3& p : {a, b, c, d}) vertices.push_back({p, glm::vec3(0.0f)});
-    std::vector<glm::vec3> positions;
-    for (const Vertex& v : expand_indices(vertices, {0, 1, 2, 0, 2, 3}))
-        positions.push_back(v.position);
-    return positions;
-}
-
-float wrap_degrees(float a) {
-    while (a > 180.0f) a -= 360.0f;
-    while (a < -180.0f) a += 360.0f;
-    return a;
-}
-
 }  // namespace
 
 class PipelineLab : public fw::Lab {
@@ -179,40 +122,7 @@ public:
     static fw::LabInfo info() {
         fw::LabInfo i;
         i.title = "What the pipeline does to triangles";
-        i.params = {
-            fw::Param::choice("scene", kScenes, Scene::Order)
-                .help("order: two quads and the depth test; indexed: an indexed face set; "
-                      "primitives: 6 vertices in each primitive mode; culling: a cube")
-                .key('S'),
-            fw::Param::boolean("depth_test", true)
-                .help("keep the nearest fragment (GL_LESS) instead of the last drawn (order, "
-                      "culling)")
-                .key('D'),
-            fw::Param::choice("first", kFirsts, First::Red)
-                .help("which quad is drawn first (order)")
-                .key('F'),
-            fw::Param::choice("storage", kStorages, Storage::Indexed)
-                .help("6 vertices + 12 indices, or the 12 vertices they expand to (indexed)")
-                .key('I'),
-            fw::Param::choice("primitive", kPrimitives, Primitive::Triangles)
-                .help("how the 6 vertices are assembled (primitives)")
-                .key('P'),
-            fw::Param::choice("cull", kCulls, Cull::Back)
-                .help("which faces are culled; front faces are counter-clockwise (culling)")
-                .key('C'),
-            fw::Param::number("yaw", 30)
-                .range(-180, 180)
-                .step(15)
-                .unit("deg")
-                .help("cube rotation about the y axis, applied first (culling)")
-                .key('Y'),
-            fw::Param::number("pitch", 20)
-                .range(-180, 180)
-                .step(15)
-                .unit("deg")
-                .help("cube rotation about the x axis, applied after yaw (culling)")
-                .key('X'),
-        };
+        i.params = params();
         i.controls = {"drag: rotate the cube (yaw, pitch) in scene culling"};
         i.functions = {fw::unit_function("expand_quad", &expand_quad)};
         return i;
@@ -306,15 +216,10 @@ public:
     }
 
 private:
-    // scene=culling: P * V * M with M = rotateX(pitch) * rotateY(yaw).
+    // scene=culling: the cube turned by yaw and pitch, seen in perspective.
     void draw_cube(const fw::ParamValues& p, const fw::Frame& frame) {
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-        const glm::mat4 projection =
-            glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar);
-        const glm::mat4 view = glm::lookAt(kEye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-        glm::mat4 model = glm::rotate(glm::mat4(1.0f), glm::radians(p.number("pitch")), {1, 0, 0});
-        model = glm::rotate(model, glm::radians(p.number("yaw")), {0, 1, 0});
-        program_->set(kMvpUniform, projection * view * model);
+        program_->set(kMvpUniform, cube_mvp(p.number("yaw"), p.number("pitch"), aspect));
 
         set_depth_test(p.flag("depth_test"));
         set_culling(p.get<Cull>("cull"));

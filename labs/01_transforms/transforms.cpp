@@ -5,7 +5,9 @@
 // of transformations matters (T R S is not S R T).
 // Lecture: homogeneous coordinates, the basic transformations, rotation about
 // an arbitrary axis (Rodrigues), composition of transformations.
-// GL: uniform mat4 (glProgramUniformMatrix4fv), glDrawArrays.
+// GL: glBindVertexArray, glDrawArrays with a first vertex, glDisable; the
+// matrices and the colour as uniforms (mat4, vec3), which the framework's
+// fw::Program::set sends.
 // Student parts (marked TODO): translate, scale,
 // rotateX/Y/Z, rotate and compose in transforms_math.cpp.
 #include <array>
@@ -119,7 +121,7 @@ public:
     void init(fw::ProgramLibrary& programs) override {
         program_ = &programs.load({"transforms.vert", "transforms.frag"});
         vbo_ = fw::Buffer::from(squares(), GL_ARRAY_BUFFER, "square and marker");
-        squares_ = fw::VertexArray({
+        squares_ = fw::VertexArray(fw::VertexArrayDesc{
             .vertices = &vbo_,
             .layout = fw::VertexLayout::of<Vertex>().attr(A_POSITION, &Vertex::position),
             .label = "square and marker",
@@ -133,15 +135,17 @@ public:
         program_->use();
         program_->set(kProjectionUniform, kProjection);
 
+        // Both squares live in the one vertex buffer: `first` says which.
+        glBindVertexArray(squares_.id());
         program_->set(kModelUniform, glm::mat4(1.0f));
         program_->set(kColorUniform, kGrey);
-        squares_.draw(GL_TRIANGLES, kQuadVertices, kSquareFirst);
+        glDrawArrays(GL_TRIANGLES, kSquareFirst, kQuadVertices);
 
         program_->set(kModelUniform, model_of(p));
         program_->set(kColorUniform, kRed);
-        squares_.draw(GL_TRIANGLES, kQuadVertices, kSquareFirst);
+        glDrawArrays(GL_TRIANGLES, kSquareFirst, kQuadVertices);
         program_->set(kColorUniform, kYellow);
-        squares_.draw(GL_TRIANGLES, kQuadVertices, kMarkerFirst);
+        glDrawArrays(GL_TRIANGLES, kMarkerFirst, kQuadVertices);
     }
 
     // M row by row and where it puts the marker's centre, e.g.

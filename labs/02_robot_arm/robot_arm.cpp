@@ -6,8 +6,8 @@
 // Lecture: the robot arm of the transformations deck (S := S N, J = S T,
 // H = J R), composition order, local versus world frames.
 // GL: one vertex buffer holding every part, glBindVertexArray and
-// glDrawArrays with a first vertex, a mat4 and a vec3 uniform per draw,
-// orthographic projection.
+// glDrawArrays with a first vertex, glDisable; a mat4 and a vec3 uniform per
+// draw, which the framework's fw::Program::set sends; orthographic projection.
 // Student part (marked TODO): arm_matrices() in
 // arm.cpp.
 #include <cmath>
@@ -129,7 +129,7 @@ public:
         hand_ = add_box(v, 0.0f, 1.0f, -0.15f, 0.15f, {0.2f, 0.9f, 0.3f});
         finger_ = add_box(v, 0.0f, 0.6f, -0.05f, 0.05f, {1.0f, 0.6f, 0.1f});
         vbo_ = fw::Buffer::from(v, GL_ARRAY_BUFFER, "robot arm parts");
-        parts_ = fw::VertexArray({
+        parts_ = fw::VertexArray(fw::VertexArrayDesc{
             .vertices = &vbo_,
             .layout = fw::VertexLayout::of<Vertex>().attr(A_POSITION, &Vertex::position),
             .label = "robot arm parts",

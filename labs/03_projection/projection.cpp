@@ -6,7 +6,8 @@
 // the depth buffer (z-fighting).
 // Lecture: camera coordinates (lookAt), the view frustum, perspective and
 // parallel projection, NDC, the viewport transform, the depth buffer.
-// GL: the vertex shader's gl_Position, gl_FragCoord.z, glEnable(GL_DEPTH_TEST).
+// GL: the vertex shader's gl_Position, gl_FragCoord.z, glEnable(GL_DEPTH_TEST)
+// with glDepthFunc, glDisable(GL_CULL_FACE), glBindVertexArray, glDrawArrays.
 // Student parts (marked TODO): lookAt(),
 // perspective(), orthographic(), perspective01() and viewport() in
 // camera_math.cpp, and the transform in shaders/03_projection/projection.vert.
@@ -134,7 +135,7 @@ public:
     void init(fw::ProgramLibrary& programs) override {
         program_ = &programs.load({"projection.vert", "projection.frag"});
         square_vbo_ = fw::Buffer::from(unit_square(), GL_ARRAY_BUFFER, "unit square");
-        square_ = fw::VertexArray({
+        square_ = fw::VertexArray(fw::VertexArrayDesc{
             .vertices = &square_vbo_,
             .layout = fw::VertexLayout::of<Vertex>().attr(A_POSITION, &Vertex::position),
             .label = "unit square",
@@ -154,10 +155,12 @@ public:
         program_->set(kOrthographicUniform, p.get<Mode>("mode") == Mode::Orthographic);
         program_->set(kNearUniform, p.number("near"));
         program_->set(kFarUniform, p.number("far"));
+        // Every object is the same square, placed by its own model matrix.
+        glBindVertexArray(square_.id());
         for (const Object& object : scene_objects(p.get<Scene>("scene"))) {
             program_->set(kModelUniform, object.model);
             program_->set(kColorUniform, object.color);
-            square_.draw(GL_TRIANGLES, static_cast<GLsizei>(square_.vertex_count()));
+            glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(square_.vertex_count()));
         }
     }
 

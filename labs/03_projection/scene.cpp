@@ -1,3 +1,4 @@
+// Lab 3's scenes: the square they are all made of and where each scene places it.
 #include "scene.hpp"
 
 #include <cmath>

@@ -11,20 +11,18 @@
 // glCullFace, glBindVertexArray, glDrawElements (GL_TRIANGLES, each triangle
 // handed whole to the geometry shader), GL_GEOMETRY_SHADER (layout(triangles)
 // in, layout(triangle_strip / line_strip, max_vertices = N) out),
-// noperspective interpolation, GL_PRIMITIVES_GENERATED (counts what the
-// geometry shader emits).
+// noperspective interpolation, GL_PRIMITIVES_GENERATED (the framework's query
+// around each frame: counts what the geometry shader emits).
 // Student parts (marked TODO): the geometry
 // shaders shaders/04_geometry/duplicate.geom, explode.geom, normals.geom and
 // the edge distances in wireframe.geom.
 #include <array>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <string>
-#include <vector>
 
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
-#include "framework/meshes.hpp"
+#include "scene.hpp"
 // A_POSITION, A_NORMAL: attribute locations, shared with mesh.vert.
 #include "shared.glsl"
 
@@ -44,32 +42,13 @@ constexpr const char* kLengthUniform = "u_length";                   // normals.
 constexpr const char* kViewportUniform = "u_viewport";               // wireframe.geom
 constexpr const char* kEdgeColorUniform = "u_edge_color";            // wireframe.frag
 
-// The values of `mode`: draw() switches on the enum; the names are what
-// --set, checkpoints.json and the window's panel use.
-enum class Mode { Passthrough, Duplicate, Explode, Normals, Wireframe };
-constexpr fw::Choice<Mode> kModes[] = {{Mode::Passthrough, "passthrough"},
-                                       {Mode::Duplicate, "duplicate"},
-                                       {Mode::Explode, "explode"},
-                                       {Mode::Normals, "normals"},
-                                       {Mode::Wireframe, "wireframe"}};
-
-constexpr int kMaxSubdiv = 5;
-
-// The sheet's scene: eye on +z looking at the sphere's centre, light from
-// the upper right front, grey sphere, orange copy, yellow normals, white edges.
-const glm::vec3 kEye{0.0f, 0.0f, 4.0f};
-constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
+// The sheet's shading: light from the upper right front, grey sphere,
+// orange copy, yellow normals, white edges.
 const glm::vec3 kLightDir = glm::normalize(glm::vec3(1.0f, 1.0f, 1.0f));
 const glm::vec3 kGrey{0.8f, 0.8f, 0.8f};
 const glm::vec3 kTint{1.0f, 0.5f, 0.2f};
 const glm::vec3 kYellow{1.0f, 1.0f, 0.0f};
 const glm::vec3 kWhite{1.0f, 1.0f, 1.0f};
-
-// 24 bytes: two vec3, no padding. Read by shaders/04_geometry/mesh.vert.
-struct Vertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-};
 
 // One icosphere on the GPU.
 struct Mesh {
@@ -84,48 +63,7 @@ public:
     static fw::LabInfo info() {
         fw::LabInfo i;
         i.title = "Geometry shaders";
-        i.params = {
-            fw::Param::choice("mode", kModes, Mode::Passthrough)
-                .help("passthrough: re-emit each triangle; duplicate: add a moved, tinted copy; "
-                      "explode: move each triangle along its face normal; normals: draw vertex "
-                      "normals as lines; wireframe: edges from distances in the same pass")
-                .key('M'),
-            fw::Param::integer("subdiv", 2)
-                .range(0, kMaxSubdiv)
-                .help("subdivisions of the icosahedron: 20 * 4^subdiv triangles")
-                .key('S'),
-            fw::Param::number("spin", 0)
-                .range(-180, 180)
-                .step(15)
-                .unit("deg")
-                .help("model rotation about the y axis")
-                .key('Y'),
-            fw::Param::number("amount", 0.2)
-                .range(0, 1)
-                .step(0.05)
-                .help("how far each triangle moves along its face normal (explode)")
-                .key('A'),
-            fw::Param::number("offset_x", 1.5)
-                .range(-3, 3)
-                .step(0.25)
-                .help("x of the copy's offset in object space (duplicate)")
-                .key('X'),
-            fw::Param::number("offset_y", 0)
-                .range(-3, 3)
-                .step(0.25)
-                .help("y (up) of the copy's offset in object space (duplicate)")
-                .key('U'),
-            fw::Param::number("offset_z", -1.5)
-                .range(-3, 3)
-                .step(0.25)
-                .help("z of the copy's offset in object space (duplicate)")
-                .key('Z'),
-            fw::Param::number("length", 0.15)
-                .range(0, 0.5)
-                .step(0.05)
-                .help("length of each normal line (normals)")
-                .key('L'),
-        };
+        i.params = params();
         i.controls = {"drag: spin the sphere about the y axis"};
         return i;
     }
@@ -145,13 +83,10 @@ public:
                                             .attr(A_POSITION, &Vertex::position)
                                             .attr(A_NORMAL, &Vertex::normal);
         for (int level = 0; level <= kMaxSubdiv; ++level) {
-            const fw::MeshData data = fw::icosphere(level);
-            std::vector<Vertex> vertices;
-            for (std::size_t v = 0; v < data.positions.size(); ++v)
-                vertices.push_back({data.positions[v], data.normals[v]});
+            const SphereMesh data = sphere_mesh(level);
             const std::string label = "icosphere " + std::to_string(level);
             Mesh& mesh = meshes_[level];
-            mesh.vertices = fw::Buffer::from(vertices, GL_ARRAY_BUFFER, label + " vertices");
+            mesh.vertices = fw::Buffer::from(data.vertices, GL_ARRAY_BUFFER, label + " vertices");
             mesh.indices = fw::Buffer::from(data.indices, GL_ELEMENT_ARRAY_BUFFER, label);
             // The vertex array records the layout and the index buffer;
             // draw() binds it and draws.
@@ -172,64 +107,23 @@ public:
         glFrontFace(GL_CCW);
         glCullFace(GL_BACK);
 
-        const glm::mat4 model =
-            glm::rotate(glm::mat4(1.0f), glm::radians(p.number("spin")), {0.0f, 1.0f, 0.0f});
-        const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-        const glm::mat4 view_projection =
-            glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar) *
-            glm::lookAt(kEye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-        // Only the programs this frame draws with: one that failed to build
-        // costs only the modes that use it.
-        const auto set_transforms = [&](const fw::Program& program) {
-            program.set(kModelUniform, model);
-            program.set(kViewProjectionUniform, view_projection);
-        };
-
-        // The uniforms that only the student parts read are set with
-        // set_if_active(): the compiler removes them until that part is written.
         const Mode mode = p.get<Mode>("mode");
-        fw::Program* shaded = passthrough_;
-        switch (mode) {
-            case Mode::Passthrough:
-            case Mode::Normals:  // the sphere as passthrough, then the lines below
-                break;
-            case Mode::Duplicate: {
-                shaded = duplicate_;
-                const glm::vec3 offset{p.number("offset_x"), p.number("offset_y"),
-                                       p.number("offset_z")};
-                // model * (q + offset) = model * q + mat3(model) * offset.
-                shaded->set_if_active(kOffsetUniform, glm::mat3(model) * offset);
-                shaded->set_if_active(kTintUniform, kTint);
-                break;
-            }
-            case Mode::Explode:
-                shaded = explode_;
-                shaded->set_if_active(kAmountUniform, p.number("amount"));
-                break;
-            case Mode::Wireframe:
-                shaded = wireframe_;
-                shaded->set_if_active(
-                    kViewportUniform,
-                    glm::vec2(static_cast<float>(frame.width), static_cast<float>(frame.height)));
-                shaded->set(kEdgeColorUniform, kWhite);
-                break;
-        }
-        set_transforms(*shaded);
-        shaded->set(kColorUniform, kGrey);
-        shaded->set(kLightDirUniform, kLightDir);
+        const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
+        const Transforms transforms{model_matrix(p.number("spin")), view_projection(aspect)};
+        const fw::Program& shaded = shaded_program(mode, p, frame, transforms);
 
         // The icosphere's triangles, 3 indices each (GL_UNSIGNED_INT, in the
         // element buffer the vertex array holds): the geometry shader receives
         // each triangle whole.
         const Mesh& mesh = meshes_[static_cast<std::size_t>(p.integer("subdiv"))];
         const auto index_count = static_cast<GLsizei>(mesh.vao.index_count());
-        shaded->use();
+        shaded.use();
         glBindVertexArray(mesh.vao.id());
         glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
         if (mode == Mode::Normals) {
             // The same triangles again (the vertex array is still bound),
             // through the geometry shader that turns each into three lines.
-            set_transforms(*normals_);
+            set_transforms(*normals_, transforms);
             normals_->set(kColorUniform, kYellow);
             normals_->set_if_active(kLengthUniform, p.number("length"));
             normals_->use();
@@ -251,6 +145,55 @@ public:
     }
 
 private:
+    // M and P V, for mesh.vert and the geometry shaders that leave clip space.
+    struct Transforms {
+        glm::mat4 model, view_projection;
+    };
+
+    // Only the programs this frame draws with get their uniforms: one that
+    // failed to build costs only the modes that use it.
+    static void set_transforms(const fw::Program& program, const Transforms& t) {
+        program.set(kModelUniform, t.model);
+        program.set(kViewProjectionUniform, t.view_projection);
+    }
+
+    // The program that draws the sphere in `mode`, its uniforms set. The
+    // uniforms that only the student parts read are set with set_if_active():
+    // the compiler removes them until that part is written.
+    const fw::Program& shaded_program(Mode mode, const fw::ParamValues& p, const fw::Frame& frame,
+                                      const Transforms& t) const {
+        fw::Program* shaded = passthrough_;
+        switch (mode) {
+            case Mode::Passthrough:
+            case Mode::Normals:  // the sphere as passthrough, then the normals' lines
+                break;
+            case Mode::Duplicate: {
+                shaded = duplicate_;
+                const glm::vec3 offset{p.number("offset_x"), p.number("offset_y"),
+                                       p.number("offset_z")};
+                // model * (q + offset) = model * q + mat3(model) * offset.
+                shaded->set_if_active(kOffsetUniform, glm::mat3(t.model) * offset);
+                shaded->set_if_active(kTintUniform, kTint);
+                break;
+            }
+            case Mode::Explode:
+                shaded = explode_;
+                shaded->set_if_active(kAmountUniform, p.number("amount"));
+                break;
+            case Mode::Wireframe:
+                shaded = wireframe_;
+                shaded->set_if_active(
+                    kViewportUniform,
+                    glm::vec2(static_cast<float>(frame.width), static_cast<float>(frame.height)));
+                shaded->set(kEdgeColorUniform, kWhite);
+                break;
+        }
+        set_transforms(*shaded, t);
+        shaded->set(kColorUniform, kGrey);
+        shaded->set(kLightDirUniform, kLightDir);
+        return *shaded;
+    }
+
     fw::Program *passthrough_ = nullptr, *duplicate_ = nullptr, *explode_ = nullptr;
     fw::Program *normals_ = nullptr, *wireframe_ = nullptr;
     std::array<Mesh, kMaxSubdiv + 1> meshes_;

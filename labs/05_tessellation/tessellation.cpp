@@ -15,19 +15,17 @@
 // glDrawArrays(GL_PATCHES) and glDrawElements(GL_PATCHES), GL_TESS_CONTROL_SHADER
 // (layout(vertices = N) out, gl_TessLevelInner/Outer), GL_TESS_EVALUATION_SHADER
 // (layout(triangles / quads, *_spacing, ccw) in, gl_TessCoord), a stage linked
-// from several shader objects, GL_PRIMITIVES_GENERATED.
+// from several shader objects (the framework's fw::ProgramLibrary links them),
+// GL_PRIMITIVES_GENERATED (the framework's query around each frame).
 // Student parts (marked TODO), all GLSL: the
 // levels in shaders/05_tessellation/levels.tesc, the evaluation shaders
 // sphere.tese, flag.tese and param_sphere.tese.
 #include <array>
-#include <glm/gtc/constants.hpp>
-#include <glm/gtc/matrix_transform.hpp>
 #include <string>
-#include <vector>
 
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
-#include "framework/meshes.hpp"
+#include "scenes.hpp"
 // A_POSITION (attribute location, shared with patch.vert) and SHADING_*
 // (values of u_shading, shared with shade.frag).
 #include "shared.glsl"
@@ -55,71 +53,12 @@ constexpr const char* kEdgeColorUniform = "u_edge_color";            // shade.fr
 // How shade.frag colours a fragment: each value is the one sent to u_shading.
 enum class Shading { Fill = SHADING_FILL, Lambert = SHADING_LAMBERT, Normal = SHADING_NORMAL };
 
-// The parameters' choices. Each enum is what draw() switches on; the names
-// are what --set, checkpoints.json and the window's panel use.
-// The sheet's scenes: one patch each, except the icosahedron's 20.
-enum class Scene { Triangle, Sphere, Flag, ParamSphere };
-constexpr fw::Choice<Scene> kScenes[] = {{Scene::Triangle, "triangle"},
-                                         {Scene::Sphere, "sphere"},
-                                         {Scene::Flag, "flag"},
-                                         {Scene::ParamSphere, "param_sphere"}};
-// Each spacing names its shader object spacing_<name>.tese.
-enum class Spacing { Equal, FractionalEven, FractionalOdd };
-constexpr fw::Choice<Spacing> kSpacings[] = {{Spacing::Equal, "equal"},
-                                             {Spacing::FractionalEven, "fractional_even"},
-                                             {Spacing::FractionalOdd, "fractional_odd"}};
-enum class Show { Shaded, Normals };
-constexpr fw::Choice<Show> kShows[] = {{Show::Shaded, "shaded"}, {Show::Normals, "normals"}};
-
-// The scene's evaluation shader.
-const char* evaluation_shader(Scene scene) {
-    switch (scene) {
-        case Scene::Triangle:
-            return "flat.tese";
-        case Scene::Sphere:
-            return "sphere.tese";
-        case Scene::Flag:
-            return "flag.tese";
-        case Scene::ParamSphere:
-            return "param_sphere.tese";
-    }
-    return "";
-}
-// Quad patches (4 control points) or triangles (3).
-bool quad_patches(Scene scene) { return scene == Scene::Flag || scene == Scene::ParamSphere; }
-
-constexpr double kMinLevel = 1.0, kMaxLevel = 64.0;
-
-// Scene triangle: NDC corners, counter-clockwise, identity matrices.
-const std::vector<glm::vec3> kTriangle = {
-    {-0.9f, -0.8f, 0.0f}, {0.9f, -0.8f, 0.0f}, {0.0f, 0.9f, 0.0f}};
-// A quad patch: the unit square's corners in (u, v), counter-clockwise.
-const std::vector<glm::vec3> kQuad = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+// Scene triangle: unlit, in its fill colour; edges in white.
 const glm::vec3 kFillColor{0.2f, 0.3f, 0.8f};
 const glm::vec3 kWhite{1.0f};
-
 // Sphere, param_sphere (as lab 4) and flag: lit with Lambert alone.
 const glm::vec3 kGrey{0.8f};
 const glm::vec3 kLightDir = glm::normalize(glm::vec3(1.0f, 1.0f, 1.0f));
-constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
-const glm::vec3 kSphereEye{0.0f, 0.0f, 4.0f};
-// The flag, W x H = 2 x 1.2 in the plane z = 0 from the origin, seen from
-// the front, up and to the left, looking at its centre.
-constexpr float kFlagW = 2.0f, kFlagH = 1.2f;
-const glm::vec3 kFlagEye{-0.2f, 1.3f, 2.6f};
-const glm::vec3 kFlagCentre{1.0f, 0.6f, 0.0f};
-// animate: the phase grows by 180 degrees a second in the window.
-constexpr float kWaveSpeed = glm::pi<float>();  // radians per second
-
-fw::Param level(const char* name, int key, const char* what) {
-    return fw::Param::number(name, 4)
-        .range(kMinLevel, kMaxLevel)
-        .step(1)
-        .help(std::string(what) +
-              " tessellation level of every patch; fractions matter with "
-              "the fractional spacings")
-        .key(key);
-}
 
 }  // namespace
 
@@ -128,44 +67,7 @@ public:
     static fw::LabInfo info() {
         fw::LabInfo i;
         i.title = "Tessellation control and evaluation";
-        i.params = {
-            fw::Param::choice("scene", kScenes, Scene::Triangle)
-                .help("triangle: one flat patch; sphere: the icosahedron's 20 faces pushed onto "
-                      "the sphere; flag: the waving flag; param_sphere: the parametric sphere")
-                .key('S'),
-            level("inner", 'I', "inner"),
-            level("outer", 'O', "outer"),
-            fw::Param::choice("spacing", kSpacings, Spacing::Equal)
-                .help("how a level becomes segments: equal rounds up; fractional_even and "
-                      "fractional_odd round up to an even or odd count, two segments shorter")
-                .key('P'),
-            fw::Param::boolean("wireframe", true)
-                .help("draw the tessellated triangles' edges in white")
-                .key('W'),
-            fw::Param::choice("show", kShows, Show::Shaded)
-                .help("shaded: fill colour or Lambert; normals: the unit normal n as the colour "
-                      "0.5 n + 0.5")
-                .key('N'),
-            fw::Param::number("D", 0.15)
-                .range(0, 0.5)
-                .step(0.05)
-                .help("depth of the flag's wave: r.z = sin(K pi u + phase) D (flag)")
-                .key('D'),
-            fw::Param::number("K", 2)
-                .range(0, 8)
-                .step(0.5)
-                .help("half-waves across the flag (flag)")
-                .key('K'),
-            fw::Param::number("phase", 0)
-                .range(0, 360)
-                .step(15)
-                .unit("deg")
-                .help("the wave's phase (flag)")
-                .key('H'),
-            fw::Param::boolean("animate", false)
-                .help("in the window, the phase grows by 180 degrees a second (flag)")
-                .key('A'),
-        };
+        i.params = params();
         i.controls = {"scroll: inner and outer levels up / down together"};
         return i;
     }
@@ -187,15 +89,15 @@ public:
         // The vertex arrays record the layout (and the icosahedron's index
         // buffer); draw() binds one and draws its patches.
         const fw::VertexLayout layout =
-            fw::VertexLayout::of<glm::vec3>().add({A_POSITION, 3, GL_FLOAT, 0});
-        triangle_vbo_ = fw::Buffer::from(kTriangle, GL_ARRAY_BUFFER, "triangle patch");
+            fw::VertexLayout::of<Vertex>().attr(A_POSITION, &Vertex::position);
+        triangle_vbo_ = fw::Buffer::from(triangle_patch(), GL_ARRAY_BUFFER, "triangle patch");
         triangle_ = fw::VertexArray(
             fw::VertexArrayDesc{.vertices = &triangle_vbo_, .layout = layout, .label = "triangle"});
-        quad_vbo_ = fw::Buffer::from(kQuad, GL_ARRAY_BUFFER, "quad patch");
+        quad_vbo_ = fw::Buffer::from(quad_patch(), GL_ARRAY_BUFFER, "quad patch");
         quad_ = fw::VertexArray(
             fw::VertexArrayDesc{.vertices = &quad_vbo_, .layout = layout, .label = "quad"});
-        const fw::MeshData ico = fw::icosahedron();
-        ico_vbo_ = fw::Buffer::from(ico.positions, GL_ARRAY_BUFFER, "icosahedron corners");
+        const Patches ico = icosahedron_patches();
+        ico_vbo_ = fw::Buffer::from(ico.vertices, GL_ARRAY_BUFFER, "icosahedron corners");
         ico_ibo_ = fw::Buffer::from(ico.indices, GL_ELEMENT_ARRAY_BUFFER, "icosahedron faces");
         ico_ = fw::VertexArray(fw::VertexArrayDesc{.vertices = &ico_vbo_,
                                                    .layout = layout,
@@ -211,6 +113,28 @@ public:
 
         const Scene scene = p.get<Scene>("scene");
         const fw::Program& program = *programs_[index(scene)][index(p.get<Spacing>("spacing"))];
+        set_uniforms(program, scene, p, frame);
+        program.use();
+        draw_patches(scene);
+    }
+
+    // The patches drawn and their domain: {"patches": 20, "domain": "triangles"}.
+    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
+        const Scene scene = p.get<Scene>("scene");
+        const std::size_t patches = scene == Scene::Sphere ? ico_.index_count() / 3 : 1;
+        return {{"patches", patches}, {"domain", quad_patches(scene) ? "quads" : "triangles"}};
+    }
+
+    // Scroll: both levels up or down by one a step, within their range [1, 64].
+    bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
+        for (const char* name : {"inner", "outer"}) p.set_clamped(name, p.number(name) + steps);
+        return true;
+    }
+
+private:
+    // The levels, the camera, the shading and the edges; the flag's wave.
+    static void set_uniforms(const fw::Program& program, Scene scene, const fw::ParamValues& p,
+                             const fw::Frame& frame) {
         // The uniforms that only the student parts read are set with
         // set_if_active(): the compiler removes them until that part is written.
         program.set_if_active(kInnerUniform, p.number("inner"));
@@ -221,43 +145,28 @@ public:
         program.set(kLightDirUniform, kLightDir);
 
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-        const glm::mat4 projection =
-            glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar);
-        const glm::vec3 up{0.0f, 1.0f, 0.0f};
-        glm::mat4 view_projection(1.0f);
-        switch (scene) {
-            case Scene::Triangle:  // NDC corners: the identity
-                break;
-            case Scene::Flag: {
-                view_projection = projection * glm::lookAt(kFlagEye, kFlagCentre, up);
-                // Offscreen, frame.time is 0: the same parameters draw the same image.
-                const float phase =
-                    glm::radians(p.number("phase")) +
-                    (p.flag("animate") ? static_cast<float>(frame.time) * kWaveSpeed : 0.0f);
-                program.set_if_active(kFlagWUniform, kFlagW);
-                program.set_if_active(kFlagHUniform, kFlagH);
-                program.set_if_active(kFlagDUniform, p.number("D"));
-                program.set_if_active(kFlagKUniform, p.number("K"));
-                program.set_if_active(kPhaseUniform, phase);
-                break;
-            }
-            case Scene::Sphere:
-            case Scene::ParamSphere:
-                view_projection = projection * glm::lookAt(kSphereEye, glm::vec3(0.0f), up);
-                break;
+        program.set(kViewProjectionUniform, view_projection(scene, aspect));
+        if (scene == Scene::Flag) {
+            program.set_if_active(kFlagWUniform, kFlagW);
+            program.set_if_active(kFlagHUniform, kFlagH);
+            program.set_if_active(kFlagDUniform, p.number("D"));
+            program.set_if_active(kFlagKUniform, p.number("K"));
+            program.set_if_active(kPhaseUniform,
+                                  flag_phase(p.number("phase"), p.flag("animate"), frame.time));
         }
-        program.set(kViewProjectionUniform, view_projection);
+
         const bool normals = p.get<Show>("show") == Show::Normals;
         const Shading shading = normals                    ? Shading::Normal
                                 : scene == Scene::Triangle ? Shading::Fill
                                                            : Shading::Lambert;
         program.set(kShadingUniform, static_cast<int>(shading));
         program.set(kColorUniform, scene == Scene::Triangle ? kFillColor : kGrey);
+    }
 
-        // A patch is a list of control points with no shape of its own:
-        // GL_PATCH_VERTICES says how many make one, and the draw call's
-        // count how many points there are, so count / GL_PATCH_VERTICES patches.
-        program.use();
+    // A patch is a list of control points with no shape of its own:
+    // GL_PATCH_VERTICES says how many make one, and the draw call's
+    // count how many points there are, so count / GL_PATCH_VERTICES patches.
+    void draw_patches(Scene scene) const {
         switch (scene) {
             case Scene::Sphere:
                 // 20 patches of 3 corners each, through the icosahedron's 60
@@ -284,20 +193,6 @@ public:
         glBindVertexArray(0);
     }
 
-    // The patches drawn and their domain: {"patches": 20, "domain": "triangles"}.
-    nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
-        const Scene scene = p.get<Scene>("scene");
-        const std::size_t patches = scene == Scene::Sphere ? ico_.index_count() / 3 : 1;
-        return {{"patches", patches}, {"domain", quad_patches(scene) ? "quads" : "triangles"}};
-    }
-
-    // Scroll: both levels up or down by one a step, within their range [1, 64].
-    bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
-        for (const char* name : {"inner", "outer"}) p.set_clamped(name, p.number(name) + steps);
-        return true;
-    }
-
-private:
     static std::size_t index(Scene scene) { return static_cast<std::size_t>(scene); }
     static std::size_t index(Spacing spacing) { return static_cast<std::size_t>(spacing); }
     fw::Program*& program(Scene scene, Spacing spacing) {

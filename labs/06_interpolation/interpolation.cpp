@@ -7,8 +7,8 @@
 // Lecture: rasterization and interpolation, shading models, NPR.
 // GL: the GLSL interpolation qualifiers smooth, noperspective and flat,
 // glProvokingVertex, glEnable/glDisable(GL_DEPTH_TEST), glDepthFunc,
-// glDisable(GL_CULL_FACE); the framework's VertexArray draws
-// (glDrawArrays for the triangle, glDrawElements for the plane and the sphere).
+// glDisable(GL_CULL_FACE), glBindVertexArray with glDrawArrays (the triangle)
+// and glDrawElements (the plane and the sphere).
 // Student parts (marked TODO), all GLSL: the
 // qualifiers in shaders/06_interpolation/interpolate.frag; the lighting in
 // shading.vert (Gouraud) and shading.frag (Phong, toon).
@@ -165,10 +165,15 @@ public:
             interpolate_->set(kMvpUniform, glm::mat4(1.0f));
             triangle_vbo_.update(
                 triangle_vertices(p.color("color_a"), p.color("color_b"), p.color("color_c")));
-            triangle_.draw(GL_TRIANGLES, 3);
+            glBindVertexArray(triangle_.id());
+            glDrawArrays(GL_TRIANGLES, 0, 3);
         } else {
             interpolate_->set(kMvpUniform, plane_view_projection(aspect));
-            plane_.draw_indexed(GL_TRIANGLES, static_cast<GLsizei>(plane_.index_count()));
+            // Two triangles through 6 indices (GL_UNSIGNED_INT, in the
+            // element buffer of plane_).
+            glBindVertexArray(plane_.id());
+            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(plane_.index_count()),
+                           GL_UNSIGNED_INT, nullptr);
         }
     }
 
@@ -210,7 +215,9 @@ private:
         shading_->set_if_active(kShineUniform, kShine);
         shading_->set_if_active(kLaUniform, kLa);
         shading_->set_if_active(kLeUniform, kLe);
-        sphere_.draw_indexed(GL_TRIANGLES, static_cast<GLsizei>(sphere_.index_count()));
+        glBindVertexArray(sphere_.id());
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sphere_.index_count()), GL_UNSIGNED_INT,
+                       nullptr);
     }
 
     void build_sphere(int subdiv) {

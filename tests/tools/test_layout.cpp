@@ -1,6 +1,7 @@
 // The repository's layout, read from its files (no build, no GL): grading's rooms include only
-// rooms below them, framework and grading headers include no cycle, and every repository path
-// and docs section that a comment or a Markdown page cites exists.
+// rooms below them, framework and grading headers include no cycle, every repository path and
+// docs section that a comment or a Markdown page cites exists, and functions and files keep to
+// the sizes of docs/conventions.md.
 //
 // The files read are those of framework/ grading/ labs/ shaders/ tests/ bench/ scripts/ docs/
 // and README.md that git lists or would add (build*/ and third_party/ left out). Read are:
@@ -536,6 +537,74 @@ std::vector<Problem> heading_problems(const Repo& repo, size_t& cited) {
     return out;
 }
 
+// docs/conventions.md, Size: a function of framework/ and grading/ under about 60 lines, a file
+// under about 400; a lab's file about 150 to 250 lines and its draw() too under 60. Measured
+// here with a margin: 60 lines a function (signature to closing brace), 420 lines a file of
+// framework/ or grading/, 260 a lab file (its tests and grading references left out).
+constexpr size_t kFunctionLines = 60, kFileLines = 420, kLabFileLines = 260;
+
+// The functions of a C++ file: a statement at indentation 0 or 4 (namespaces are not indented;
+// 4 is a class member) that holds a `(` and opens a block at its end, up to the `}` at its own
+// indentation. Types, namespaces and control statements are no functions.
+std::vector<std::pair<int, size_t>> function_lengths(const std::vector<std::string>& lines) {
+    static const std::regex not_function(
+        R"(\s*(namespace|struct|class|enum|union|extern|if|for|while|switch|else|do|try)\b.*)");
+    std::vector<std::pair<int, size_t>> out;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const std::string& l = lines[i];
+        if (l.empty() || l.back() != '{') continue;
+        size_t first = i;  // the statement's first line
+        while (first > 0) {
+            const std::string& prev = lines[first - 1];
+            const size_t end = prev.find_last_not_of(' ');
+            if (end == std::string::npos || prev[end] == ';' || prev[end] == '}' ||
+                prev[end] == '{' || prev[end] == ':' || prev.find("//") != std::string::npos ||
+                prev[0] == '#')
+                break;
+            --first;
+        }
+        const size_t indent = lines[first].find_first_not_of(' ');
+        if (indent != 0 && indent != 4) continue;
+        std::string statement;
+        for (size_t k = first; k <= i; ++k) statement += lines[k] + " ";
+        if (statement.find('(') == std::string::npos || std::regex_match(statement, not_function))
+            continue;
+        const std::string close = std::string(indent, ' ') + "}";
+        size_t j = i + 1;
+        while (j < lines.size() && lines[j].rfind(close, 0) != 0) ++j;
+        out.push_back({int(first) + 1, j - first + 1});
+        i = j;
+    }
+    return out;
+}
+
+std::vector<Problem> size_problems(const Repo& repo, size_t& functions) {
+    static const std::regex lab_code(R"(labs/\d\d_[a-z0-9_]+/[^/]+\.(cpp|hpp))");
+    std::vector<Problem> out;
+    for (const std::string& f : repo.files) {
+        const bool lab = std::regex_match(f, lab_code);
+        if (!lab && !((starts_with(f, "framework/") || starts_with(f, "grading/")) &&
+                      (ends_with(f, ".cpp") || ends_with(f, ".hpp"))))
+            continue;
+        const std::vector<std::string> lines = read_lines(repo.root / f);
+        const size_t file_limit = lab ? kLabFileLines : kFileLines;
+        if (lines.size() > file_limit)
+            out.push_back(
+                {f + ":1", std::to_string(lines.size()) + " lines, over " +
+                               std::to_string(file_limit) +
+                               ": split it by responsibility (docs/conventions.md, Size)"});
+        for (const auto& [line, length] : function_lengths(lines)) {
+            ++functions;
+            if (length > kFunctionLines)
+                out.push_back({f + ":" + std::to_string(line),
+                               "a function of " + std::to_string(length) + " lines, over " +
+                                   std::to_string(kFunctionLines) +
+                                   ": split it into named steps (docs/conventions.md, Size)"});
+        }
+    }
+    return out;
+}
+
 const Repo& repo() {
     static const Repo r = read_repo(fw::test::source_dir());
     return r;
@@ -576,5 +645,13 @@ TEST_CASE("every docs section cited in a comment or a Markdown page is there") {
     const std::vector<Problem> problems = heading_problems(repo(), cited);
     MESSAGE(cited << " sections cited");
     CHECK(cited > 20);
+    report(problems);
+}
+
+TEST_CASE("functions and files keep to the sizes of docs/conventions.md") {
+    size_t functions = 0;
+    const std::vector<Problem> problems = size_problems(repo(), functions);
+    MESSAGE(functions << " functions of framework/, grading/ and the labs measured");
+    CHECK(functions > 300);
     report(problems);
 }

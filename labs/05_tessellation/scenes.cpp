@@ -1,0 +1,129 @@
+// Lab 5's scenes and parameters; the numbers are those of
+// labs/05_tessellation/README.md.
+#include "scenes.hpp"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <string>
+
+#include "framework/meshes.hpp"
+
+namespace tessellation {
+
+namespace {
+
+// Sphere, param_sphere (as lab 4) and flag: perspective(45 deg, W/H, 0.1, 100).
+constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
+const glm::vec3 kUp{0.0f, 1.0f, 0.0f};
+const glm::vec3 kSphereEye{0.0f, 0.0f, 4.0f};
+// The flag seen from the front, up and to the left, looking at its centre.
+const glm::vec3 kFlagEye{-0.2f, 1.3f, 2.6f};
+const glm::vec3 kFlagCentre{1.0f, 0.6f, 0.0f};
+// animate: the phase grows by 180 degrees a second in the window.
+constexpr float kWaveSpeed = glm::pi<float>();  // radians per second
+
+constexpr double kMinLevel = 1.0, kMaxLevel = 64.0;
+
+fw::Param level(const char* name, int key, const char* what) {
+    return fw::Param::number(name, 4)
+        .range(kMinLevel, kMaxLevel)
+        .step(1)
+        .help(std::string(what) +
+              " tessellation level of every patch; fractions matter with "
+              "the fractional spacings")
+        .key(key);
+}
+
+}  // namespace
+
+std::vector<fw::Param> params() {
+    return {
+        fw::Param::choice("scene", kScenes, Scene::Triangle)
+            .help("triangle: one flat patch; sphere: the icosahedron's 20 faces pushed onto "
+                  "the sphere; flag: the waving flag; param_sphere: the parametric sphere")
+            .key('S'),
+        level("inner", 'I', "inner"),
+        level("outer", 'O', "outer"),
+        fw::Param::choice("spacing", kSpacings, Spacing::Equal)
+            .help("how a level becomes segments: equal rounds up; fractional_even and "
+                  "fractional_odd round up to an even or odd count, two segments shorter")
+            .key('P'),
+        fw::Param::boolean("wireframe", true)
+            .help("draw the tessellated triangles' edges in white")
+            .key('W'),
+        fw::Param::choice("show", kShows, Show::Shaded)
+            .help("shaded: fill colour or Lambert; normals: the unit normal n as the colour "
+                  "0.5 n + 0.5")
+            .key('N'),
+        fw::Param::number("D", 0.15)
+            .range(0, 0.5)
+            .step(0.05)
+            .help("depth of the flag's wave: r.z = sin(K pi u + phase) D (flag)")
+            .key('D'),
+        fw::Param::number("K", 2)
+            .range(0, 8)
+            .step(0.5)
+            .help("half-waves across the flag (flag)")
+            .key('K'),
+        fw::Param::number("phase", 0)
+            .range(0, 360)
+            .step(15)
+            .unit("deg")
+            .help("the wave's phase (flag)")
+            .key('H'),
+        fw::Param::boolean("animate", false)
+            .help("in the window, the phase grows by 180 degrees a second (flag)")
+            .key('A'),
+    };
+}
+
+const char* evaluation_shader(Scene scene) {
+    switch (scene) {
+        case Scene::Triangle:
+            return "flat.tese";
+        case Scene::Sphere:
+            return "sphere.tese";
+        case Scene::Flag:
+            return "flag.tese";
+        case Scene::ParamSphere:
+            return "param_sphere.tese";
+    }
+    return "";
+}
+
+bool quad_patches(Scene scene) { return scene == Scene::Flag || scene == Scene::ParamSphere; }
+
+std::vector<Vertex> triangle_patch() {
+    return {{{-0.9f, -0.8f, 0.0f}}, {{0.9f, -0.8f, 0.0f}}, {{0.0f, 0.9f, 0.0f}}};
+}
+
+std::vector<Vertex> quad_patch() { return {{{0, 0, 0}}, {{1, 0, 0}}, {{1, 1, 0}}, {{0, 1, 0}}}; }
+
+Patches icosahedron_patches() {
+    const fw::MeshData ico = fw::icosahedron();
+    Patches patches;
+    for (const glm::vec3& corner : ico.positions) patches.vertices.push_back({corner});
+    patches.indices = ico.indices;
+    return patches;
+}
+
+float flag_phase(float degrees, bool animate, double time) {
+    // Offscreen, time is 0: the same parameters draw the same image.
+    return glm::radians(degrees) + (animate ? static_cast<float>(time) * kWaveSpeed : 0.0f);
+}
+
+glm::mat4 view_projection(Scene scene, float aspect) {
+    const glm::mat4 projection = glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar);
+    switch (scene) {
+        case Scene::Triangle:
+            return glm::mat4(1.0f);
+        case Scene::Flag:
+            return projection * glm::lookAt(kFlagEye, kFlagCentre, kUp);
+        case Scene::Sphere:
+        case Scene::ParamSphere:
+            return projection * glm::lookAt(kSphereEye, glm::vec3(0.0f), kUp);
+    }
+    return glm::mat4(1.0f);
+}
+
+}  // namespace tessellation

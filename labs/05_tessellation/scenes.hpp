@@ -1,0 +1,66 @@
+// Lab 5's scenes, their control points and cameras (labs/05_tessellation/README.md,
+// The scenes), and the parameters that choose and shape them.
+#pragma once
+
+#include <glad/gl.h>
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "framework/params.hpp"
+
+namespace tessellation {
+
+// 12 bytes: one vec3, a control point. Read by shaders/05_tessellation/patch.vert.
+struct Vertex {
+    glm::vec3 position;
+};
+
+// The parameters' choices. Each enum is what the lab switches on; the names
+// are what --set, checkpoints.json and the window's panel use.
+// The sheet's scenes: one patch each, except the icosahedron's 20.
+enum class Scene { Triangle, Sphere, Flag, ParamSphere };
+constexpr fw::Choice<Scene> kScenes[] = {{Scene::Triangle, "triangle"},
+                                         {Scene::Sphere, "sphere"},
+                                         {Scene::Flag, "flag"},
+                                         {Scene::ParamSphere, "param_sphere"}};
+// Each spacing names its shader object spacing_<name>.tese.
+enum class Spacing { Equal, FractionalEven, FractionalOdd };
+constexpr fw::Choice<Spacing> kSpacings[] = {{Spacing::Equal, "equal"},
+                                             {Spacing::FractionalEven, "fractional_even"},
+                                             {Spacing::FractionalOdd, "fractional_odd"}};
+enum class Show { Shaded, Normals };
+constexpr fw::Choice<Show> kShows[] = {{Show::Shaded, "shaded"}, {Show::Normals, "normals"}};
+
+// The lab's parameters (labs/05_tessellation/README.md, Parameters).
+std::vector<fw::Param> params();
+
+// The scene's evaluation shader, a file of shaders/05_tessellation/.
+const char* evaluation_shader(Scene scene);
+// Quad patches (4 control points) or triangles (3).
+bool quad_patches(Scene scene);
+
+// Scene triangle: one patch, NDC corners, counter-clockwise.
+std::vector<Vertex> triangle_patch();
+// Scenes flag and param_sphere: one patch, the unit square's corners in
+// (u, v), counter-clockwise.
+std::vector<Vertex> quad_patch();
+// Scene sphere: the icosahedron's 12 corners and its 20 faces as 60 indices,
+// one triangle patch per face.
+struct Patches {
+    std::vector<Vertex> vertices;
+    std::vector<GLuint> indices;
+};
+Patches icosahedron_patches();
+
+// The flag, W x H = 2 x 1.2 in the plane z = 0 from the origin.
+constexpr float kFlagW = 2.0f, kFlagH = 1.2f;
+// The wave's phase in radians: `degrees`, and with `animate` in the window
+// 180 degrees more each second of `time`.
+float flag_phase(float degrees, bool animate, double time);
+
+// The scene's camera, P V: the identity for the triangle (NDC corners),
+// otherwise the perspective of the lit scenes times the scene's lookAt.
+glm::mat4 view_projection(Scene scene, float aspect);
+
+}  // namespace tessellation
