@@ -96,9 +96,10 @@ public:
     // Checks that involve several parameters (e.g. far > near); returns an
     // error message naming them, or empty when the values are consistent.
     virtual std::string validate(const ParamValues&) const { return {}; }
-    // Window only: mouse drag in pixels of `frame` (dy > 0 when the mouse
-    // moves up, as GL's y) and scroll steps, for controls such as an orbit
-    // camera. May change parameters; return true if it did.
+    // The window and the browser page only: mouse drag in pixels of `frame`
+    // (dy > 0 when the mouse moves up, as GL's y) and scroll steps, for
+    // controls such as an orbit camera. May change parameters; return true
+    // if it did (the change is kept only if validate() accepts it).
     virtual bool on_drag(ParamValues&, const Frame&, double /*dx*/, double /*dy*/) { return false; }
     virtual bool on_scroll(ParamValues&, const Frame&, double /*steps*/) { return false; }
 };

@@ -21,26 +21,25 @@ LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
 
 LabRenderer::~LabRenderer() = default;
 
-RenderOutput LabRenderer::render(const ParamValues& params, int width, int height, double time,
-                                 bool with_depth) {
-    std::string problem = lab_->validate(params);
-    if (!problem.empty()) throw UsageError("lab '" + registered_.info.id + "': " + problem);
+// A framebuffer of the frame's size, bound and cleared as Lab::draw expects.
+void LabRenderer::begin_frame(int width, int height) {
     if (!framebuffer_ || framebuffer_->width() != width || framebuffer_->height() != height) {
         framebuffer_.reset();
         framebuffer_ = std::make_unique<Framebuffer>(FramebufferDesc{
             width, height, "offscreen " + std::to_string(width) + "x" + std::to_string(height)});
     }
-
-    auto start = std::chrono::steady_clock::now();
     framebuffer_->bind();
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
 
+// The lab's draw inside the frame's queries, finished by GL.
+void LabRenderer::draw_queried(const ParamValues& params, const Frame& frame) {
     primitives_->begin();
     elapsed_->begin();
     try {
-        lab_->draw(params, Frame{width, height, time});
+        lab_->draw(params, frame);
     } catch (...) {
         // The next frame starts clean: its queries can begin, and GL errors
         // this draw left are not blamed on it (the exception says what failed).
@@ -53,15 +52,21 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
     elapsed_->end();
     primitives_->end();
     glFinish();
-    double render_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    check_gl(("draw of lab " + registered_.info.id).c_str());
+}
 
-    RenderOutput out;
-    out.color = framebuffer_->read_color();
-    if (with_depth) out.depth = framebuffer_->read_depth();
-    out.stats = {
-        {"lab", registered_.info.id},
+FrameResult LabRenderer::draw(const ParamValues& params, int width, int height, double time) {
+    const std::string& id = registered_.info.id;
+    const std::string rejected = lab_->validate(params);
+    const auto start = std::chrono::steady_clock::now();
+    begin_frame(width, height);
+    if (!rejected.empty()) throw UsageError("lab '" + id + "': " + rejected);
+    const Frame frame{width, height, time};
+    draw_queried(params, frame);
+    const double render_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    check_gl(("draw of lab " + id).c_str());
+    return {{
+        {"lab", id},
         {"params", params.to_json()},
         {"backend", context_.backend},
         {"platform", context_.platform},
@@ -72,8 +77,16 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
         {"primitives_generated", primitives_->result()},
         {"render_ms", render_ms},
         {"gpu_ms", static_cast<double>(elapsed_->result()) / 1e6},
-        {"lab_stats", lab_->stats(params, Frame{width, height, time})},
-    };
+        {"lab_stats", lab_->stats(params, frame)},
+    }};
+}
+
+RenderOutput LabRenderer::render(const ParamValues& params, int width, int height, double time,
+                                 bool with_depth) {
+    RenderOutput out;
+    out.stats = draw(params, width, height, time).stats;
+    out.color = framebuffer_->read_color();
+    if (with_depth) out.depth = framebuffer_->read_depth();
     check_gl(("read-back of lab " + registered_.info.id).c_str());
     return out;
 }

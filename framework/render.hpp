@@ -1,6 +1,8 @@
-// Draws frames of one lab offscreen, in the current context, into a
-// framework-owned framebuffer, and reads back colour, depth and stats.
-// `lab render`, the tests and the grading child all draw through this.
+// Draws frames of one lab, in the current context, into a framework-owned
+// framebuffer. `lab render`, the tests and the grading child read each frame
+// back (render()); `lab serve` reads back colour only; the window copies the
+// framebuffer into itself (draw(), then framebuffer()). One frame protocol
+// for all of them: the same clear, validation, queries and error handling.
 #pragma once
 
 #include <memory>
@@ -16,10 +18,15 @@ namespace fw {
 class Framebuffer;
 class Query;
 
+// What draw() measured of the frame it drew.
+struct FrameResult {
+    nlohmann::json stats;  // the --stats fields (docs/contract.md, `--stats FILE.json`)
+};
+
 struct RenderOutput {
     Image color;
     DepthImage depth;
-    nlohmann::json stats;  // the --stats fields (docs/contract.md, `--stats FILE.json`)
+    nlohmann::json stats;  // as FrameResult::stats
 };
 
 class LabRenderer {
@@ -30,20 +37,31 @@ public:
     LabRenderer(const LabRenderer&) = delete;
     LabRenderer& operator=(const LabRenderer&) = delete;
 
-    // One frame at width x height; throws UsageError for a size of zero or
-    // above the GL limit, or parameters the lab rejects. `time`: seconds for
-    // a lab that animates (Frame::time; 0 draws what lab render draws).
-    // Without `with_depth` the depth is not read back (RenderOutput::depth
-    // stays empty).
+    // One frame at width x height into framebuffer(), which is made again
+    // when the size changes, bound and cleared to (0, 0, 0, 1) and depth 1.
+    // Throws UsageError for a size of zero or above the GL limit, and, with
+    // the frame left cleared, for parameters the lab rejects; what the lab's
+    // draw throws, or a GL error it left, is thrown with the frame as far as
+    // it got. `time`: seconds for a lab that animates (Frame::time; 0 draws
+    // what lab render draws). Waits until GL has finished the frame.
+    FrameResult draw(const ParamValues& params, int width, int height, double time = 0.0);
+    // draw(), then the frame read back. Without `with_depth` the depth is not
+    // read (RenderOutput::depth stays empty).
     RenderOutput render(const ParamValues& params, int width, int height, double time = 0.0,
                         bool with_depth = true);
+    // What the last draw() drew into; null before the first.
+    const Framebuffer* framebuffer() const { return framebuffer_.get(); }
 
     Lab& lab() { return *lab_; }
+    const RegisteredLab& registered() const { return registered_; }
     // The lab's programs, those that failed to build included.
     const ProgramLibrary& programs() const { return programs_; }
     ProgramLibrary& programs() { return programs_; }
 
 private:
+    void begin_frame(int width, int height);
+    void draw_queried(const ParamValues& params, const Frame& frame);
+
     const RegisteredLab& registered_;
     ContextInfo context_;
     ProgramLibrary programs_;

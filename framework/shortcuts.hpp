@@ -1,6 +1,7 @@
 // Keyboard shortcuts of the lab's parameters, from their declaration: Bool
-// toggles, Enum cycles, numbers step (Shift reverses). The window (`lab run`)
-// and the browser page (`lab serve`) apply and list them through this code.
+// toggles, Enum cycles, numbers step (Shift reverses). LabSession
+// (framework/session.hpp) applies and lists them for the window (`lab run`)
+// and the browser page (`lab serve`).
 #pragma once
 
 #include <string>

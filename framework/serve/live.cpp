@@ -1,14 +1,13 @@
 #include "framework/serve/live.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <exception>
 #include <functional>
 
 #include "framework/checkpoints.hpp"
 #include "framework/error.hpp"
 #include "framework/render.hpp"
-#include "framework/shortcuts.hpp"
+#include "framework/session.hpp"
 
 namespace fw {
 
@@ -23,9 +22,8 @@ constexpr std::chrono::milliseconds kPlayInterval{16};
 json describe_lab(const RegisteredLab& lab, const ContextInfo& context) {
     json params = json::array(), shortcuts = json::array(), checkpoints = json::array();
     for (const Param& p : lab.info.params) params.push_back(describe_param(p));
-    for (const Shortcut& s : param_shortcuts(lab.info))
+    for (const Shortcut& s : LabSession::shortcuts(lab.info))
         shortcuts.push_back({{"keys", s.keys}, {"action", s.action}});
-    shortcuts.push_back({{"keys", "R"}, {"action", "reload shaders from disk"}});
     for (const Checkpoint& cp : load_checkpoints(lab))
         checkpoints.push_back({{"name", cp.name},
                                {"description", cp.description},
@@ -53,7 +51,7 @@ bool animates(const ParamValues& params) {
 }  // namespace
 
 LiveLab::LiveLab(const RegisteredLab& lab, Backend backend, int width, int height)
-    : params_(default_params(lab)), width_(width), height_(height), lab_(lab) {
+    : width_(width), height_(height), lab_(lab) {
     if (width < 1 || height < 1 || width > kMaxServeSide || height > kMaxServeSide)
         throw UsageError("--size " + std::to_string(width) + "x" + std::to_string(height) +
                          ": each side must be 1 to " + std::to_string(kMaxServeSide));
@@ -94,49 +92,52 @@ void LiveLab::stop() {
 void LiveLab::run(const RegisteredLab& lab, Backend backend) {
     std::unique_ptr<OffscreenContext> context = create_offscreen_context(backend);
     LabRenderer renderer(lab, context->info());
+    LabSession session(renderer, default_params(lab));
+    json description = describe_lab(lab, context->info());
     {
         std::lock_guard<std::mutex> lock(mutex_);
         renderer_ = &renderer;
-        description_ = describe_lab(lab, context->info());
-        for (const ShaderError* e : renderer.programs().build_errors())
-            shader_errors_.push_back(e->what());
+        session_ = &session;
+        description_ = std::move(description);
         started_ = true;
         ++version_;  // the first frame
     }
     start_cv_.notify_all();
-    render_loop();
+    try {
+        render_loop();
+    } catch (...) {
+        detach();
+        throw;
+    }
+    detach();
+}
+
+// The renderer and the session end with run(): nothing reaches them after.
+void LiveLab::detach() {
     std::lock_guard<std::mutex> lock(mutex_);
+    session_ = nullptr;
     renderer_ = nullptr;
 }
 
 bool LiveLab::await_change(Clock::time_point& next_due, double& time) {
     std::unique_lock<std::mutex> lock(mutex_);
     auto due = [this] { return stopping_ || version_ != drawn_version_; };
-    if (players_ > 0 || animates(params_))
+    const bool playing = players_ > 0 || animates(session_->params());
+    if (playing)
         wake_.wait_until(lock, next_due, due);
     else
         wake_.wait(lock, due);
     next_due = std::max(next_due + kPlayInterval, Clock::now());
     if (stopping_) return false;
-    time = players_ > 0 || animates(params_)
-               ? std::chrono::duration<double>(Clock::now() - epoch_).count()
-               : 0.0;
+    time = playing ? std::chrono::duration<double>(Clock::now() - epoch_).count() : 0.0;
     return true;
 }
 
 // Called with lab_mutex_ held.
 LiveLab::Job LiveLab::take_input(double time) {
     std::lock_guard<std::mutex> lock(mutex_);
-    const Frame frame{width_, height_, time};
-    for (const auto& [dx, dy] : drags_) renderer_->lab().on_drag(params_, frame, dx, dy);
-    for (double steps : scrolls_) renderer_->lab().on_scroll(params_, frame, steps);
-    drags_.clear();
-    scrolls_.clear();
-    if (reload_) {
-        reload_ = false;
-        shader_errors_ = renderer_->programs().reload_all();
-    }
-    return {params_, width_, height_, version_, time};
+    session_->apply_input(Frame{width_, height_, time});
+    return {session_->params(), width_, height_, version_, time};
 }
 
 // Called with lab_mutex_ held.
@@ -168,77 +169,52 @@ void LiveLab::render_loop() {
         std::shared_ptr<LiveFrame> frame = draw(take_input(time));
         std::lock_guard<std::mutex> lock(mutex_);
         frame->seq = ++seq;
-        render_error_ = frame->error;
+        session_->drawn(frame->error);
         drawn_version_ = frame->version;
         frame_ = std::move(frame);
         framed_.notify_all();
     }
 }
 
-std::uint64_t LiveLab::change(const std::function<void(ParamValues&)>& edit) {
+std::uint64_t LiveLab::change(const std::function<void(LabSession&)>& use) {
     std::lock_guard<std::mutex> lab_lock(lab_mutex_);
+    return with_session(use);
+}
+
+std::uint64_t LiveLab::with_session(const std::function<void(LabSession&)>& use) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!renderer_) throw Error("the lab is not running");
-    ParamValues next = params_;
-    edit(next);
-    const std::string problem = renderer_->lab().validate(next);
-    if (!problem.empty()) throw UsageError("lab '" + lab_.info.id + "': " + problem);
-    params_ = std::move(next);
-    ++version_;
+    if (!session_) throw Error("the lab is not running");
+    use(*session_);
     wake_.notify_all();
-    return version_;
+    return ++version_;
 }
 
 std::uint64_t LiveLab::set(const std::string& name, const std::string& value) {
-    return change([&](ParamValues& p) { p.set(name, value); });
+    return change([&](LabSession& s) { s.set(name, value); });
 }
 
 std::uint64_t LiveLab::load_checkpoint(const std::string& name) {
-    const std::vector<Checkpoint> all = load_checkpoints(lab_);
-    const ParamValues values = checkpoint_params(lab_, find_checkpoint(all, name, lab_.info.id));
-    return change([&](ParamValues& p) { p = values; });
+    return change([&](LabSession& s) { s.load_checkpoint(name); });
 }
 
 std::uint64_t LiveLab::key(const std::string& key, bool shift) {
-    if (key.size() != 1 || !std::isalnum(static_cast<unsigned char>(key[0])))
-        throw UsageError("key '" + key + "': keys are one letter or digit");
-    const int code = std::toupper(static_cast<unsigned char>(key[0]));
-    if (code == 'R') return reload_shaders();
-    bool known = false;
-    for (const Param& p : lab_.info.params)
-        known = known || (p.shortcut && std::toupper(p.shortcut) == code);
-    if (!known) {
-        std::string keys;
-        for (const Shortcut& s : param_shortcuts(lab_.info)) keys += ", " + s.keys;
-        throw UsageError("key '" + key + "' does nothing in lab '" + lab_.info.id +
-                         "'; its keys: R" + keys);
-    }
-    return change([&](ParamValues& p) { apply_param_key(p, code, shift, false); });
+    return change([&](LabSession& s) { s.press_key(key, shift); });
 }
 
 std::uint64_t LiveLab::drag(double dx, double dy) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    drags_.emplace_back(dx, dy);
-    wake_.notify_all();
-    return ++version_;
+    return with_session([&](LabSession& s) { s.drag(dx, dy); });
 }
 
 std::uint64_t LiveLab::scroll(double steps) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    scrolls_.push_back(steps);
-    wake_.notify_all();
-    return ++version_;
+    return with_session([&](LabSession& s) { s.scroll(steps); });
+}
+
+std::uint64_t LiveLab::reload_shaders() {
+    return with_session([](LabSession& s) { s.request_reload(); });
 }
 
 std::uint64_t LiveLab::redraw() {
     std::lock_guard<std::mutex> lock(mutex_);
-    wake_.notify_all();
-    return ++version_;
-}
-
-std::uint64_t LiveLab::reload_shaders() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    reload_ = true;
     wake_.notify_all();
     return ++version_;
 }
@@ -276,7 +252,7 @@ std::shared_ptr<const LiveFrame> LiveLab::latest() const {
 
 json LiveLab::problems() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return {{"shader_errors", shader_errors_}, {"render_error", render_error_}};
+    return session_ ? session_->problems().to_json() : SessionProblems{}.to_json();
 }
 
 }  // namespace fw

@@ -1,8 +1,10 @@
 // A lab rendered live for `lab serve`: one offscreen context and renderer on
 // a thread of their own, re-rendering when the parameters, the frame size or
 // the shaders change (or every frame while the lab animates or a client plays
-// it), and the latest frame kept for whoever asks. Transport-free: the HTTP
-// and WebSocket side (server.cpp) only calls these methods.
+// it), and the latest frame kept for whoever asks. The parameters, the input
+// and the problems are a LabSession's (framework/session.hpp), locked here.
+// Transport-free: the HTTP and WebSocket side (server.cpp) only calls these
+// methods.
 #pragma once
 
 #include <chrono>
@@ -14,7 +16,6 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
-#include <vector>
 
 #include "framework/context.hpp"
 #include "framework/image.hpp"
@@ -23,6 +24,7 @@
 namespace fw {
 
 class LabRenderer;
+class LabSession;
 
 // The largest frame a page may ask for, each side.
 constexpr int kMaxServeSide = 2048;
@@ -72,8 +74,9 @@ public:
     std::shared_ptr<const LiveFrame> wait_frame(std::uint64_t after,
                                                 std::chrono::milliseconds timeout);
     std::shared_ptr<const LiveFrame> latest() const;
-    // Shader build errors ("file:line: message"), empty when every program built;
-    // the last render error, if the newest change could not be drawn.
+    // The session's problems (docs/contract.md, `lab serve`): shader build
+    // errors, why the newest change could not be drawn, a drag or scroll the
+    // lab could not take.
     nlohmann::json problems() const;
     // Wakes every waiter and ends the render thread.
     void stop();
@@ -93,25 +96,27 @@ private:
     bool await_change(std::chrono::steady_clock::time_point& next_due, double& time);
     Job take_input(double time);
     std::shared_ptr<LiveFrame> draw(const Job& job);
-    std::uint64_t change(const std::function<void(ParamValues&)>& edit);
+    // Calls `use` on the session under mutex_ and wakes the render thread;
+    // returns the version that shows it. change() also holds lab_mutex_, for
+    // what calls the lab (validation); input kept for the next frame does not.
+    std::uint64_t change(const std::function<void(LabSession&)>& use);
+    std::uint64_t with_session(const std::function<void(LabSession&)>& use);
+    void detach();
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;    // the render thread: something changed
     std::condition_variable framed_;  // waiters: a new frame
-    ParamValues params_;
     std::uint64_t version_ = 0, drawn_version_ = 0;
     int width_, height_;
     int players_ = 0;
-    bool reload_ = false, stopping_ = false;
-    std::vector<std::pair<double, double>> drags_;
-    std::vector<double> scrolls_;
+    bool stopping_ = false;
     std::shared_ptr<const LiveFrame> frame_;
-    std::vector<std::string> shader_errors_;
-    std::string render_error_;
 
-    // Set up by the render thread before the constructor returns.
+    // Set up by the render thread before the constructor returns, and
+    // cleared (under mutex_) before the objects they point to end with it.
     std::mutex lab_mutex_;  // the lab object: draws, drags and validation
     LabRenderer* renderer_ = nullptr;
+    LabSession* session_ = nullptr;  // the parameters, input and problems
     nlohmann::json description_;
     std::string start_error_;
     bool started_ = false;

@@ -8,12 +8,12 @@
 #include <sstream>
 
 #include "framework/error.hpp"
+#include "framework/session.hpp"
 
 namespace fw::win {
 
 std::vector<Shortcut> shortcut_list(const LabInfo& info) {
-    std::vector<Shortcut> list = param_shortcuts(info);
-    list.push_back({"R", "reload shaders from disk"});
+    std::vector<Shortcut> list = LabSession::shortcuts(info);
     list.push_back({"F12", "save screenshot-" + info.id + "-NNN.png"});
     list.push_back({"Esc", "quit"});
     return list;

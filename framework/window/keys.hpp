@@ -1,6 +1,6 @@
-// Keyboard shortcuts of `lab run`: each parameter's key from its declaration
-// (Bool toggles, Enum cycles, numbers step; Shift reverses) plus the window's
-// own keys. The panel lists them from the same code that applies them.
+// Keyboard shortcuts of `lab run`: the session's keys (each parameter's key
+// from its declaration, R) plus the window's own, F12 and Esc. The panel
+// lists them from the same code that applies them.
 #pragma once
 
 #include <string>
@@ -11,12 +11,9 @@
 
 namespace fw::win {
 
-// GLFW's key codes for A-Z and 0-9 are their ASCII codes, so the window
-// passes them to fw::apply_param_key as they come.
-using fw::apply_param_key;
 using fw::Shortcut;
 
-// The parameters' shortcuts, then R, F12 and Esc.
+// The session's keys (LabSession::shortcuts), then F12 and Esc.
 std::vector<Shortcut> shortcut_list(const LabInfo& info);
 
 // Keys pressed by the LAB_RUN_SCRIPT variable, so that tests can drive the

@@ -46,12 +46,14 @@ bool enum_combo(const char* label, const std::vector<std::string>& choices, int&
     return changed;
 }
 
-void param_widget(const Param& p, ParamValues& values) {
+// True when the user changed the value.
+bool param_widget(const Param& p, ParamValues& values) {
     std::string label = p.name;
     if (p.shortcut != 0)
         label += "  [" + std::string(1, static_cast<char>(std::toupper(p.shortcut))) + "]";
     // AlwaysClamp: Ctrl+click lets the user type a value; keep it in range.
     const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
+    bool changed = false;
     switch (p.type) {
         case ParamType::Float: {
             double lo = p.min, hi = p.max;
@@ -59,30 +61,32 @@ void param_widget(const Param& p, ParamValues& values) {
             // only usable on a logarithmic slider, with significant digits.
             const bool decades = lo > 0.0 && hi / lo >= 1000.0;
             const ImGuiSliderFlags flags = clamp | (decades ? ImGuiSliderFlags_Logarithmic : 0);
-            ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &values.number_ref(p.name),
-                                &lo, &hi, slider_format("%.4g", p.unit_text).c_str(), flags);
+            changed =
+                ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &values.number_ref(p.name),
+                                    &lo, &hi, slider_format("%.4g", p.unit_text).c_str(), flags);
             break;
         }
         case ParamType::Int: {
             double& value = values.number_ref(p.name);
             int i = static_cast<int>(std::lround(value));
-            if (ImGui::SliderInt(label.c_str(), &i, static_cast<int>(p.min),
-                                 static_cast<int>(p.max), slider_format("%d", p.unit_text).c_str(),
-                                 clamp))
-                value = i;
+            changed = ImGui::SliderInt(label.c_str(), &i, static_cast<int>(p.min),
+                                       static_cast<int>(p.max),
+                                       slider_format("%d", p.unit_text).c_str(), clamp);
+            if (changed) value = i;
             break;
         }
         case ParamType::Bool:
-            ImGui::Checkbox(label.c_str(), &values.flag_ref(p.name));
+            changed = ImGui::Checkbox(label.c_str(), &values.flag_ref(p.name));
             break;
         case ParamType::Enum:
-            enum_combo(label.c_str(), p.choices, values.choice_ref(p.name));
+            changed = enum_combo(label.c_str(), p.choices, values.choice_ref(p.name));
             break;
         case ParamType::Color:
-            ImGui::ColorEdit3(label.c_str(), glm::value_ptr(values.color_ref(p.name)));
+            changed = ImGui::ColorEdit3(label.c_str(), glm::value_ptr(values.color_ref(p.name)));
             break;
     }
     tooltip(p);
+    return changed;
 }
 
 void shortcut_table(const LabInfo& info) {
@@ -102,7 +106,7 @@ void shortcut_table(const LabInfo& info) {
 
 }  // namespace
 
-void draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string& gl_renderer,
+bool draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string& gl_renderer,
                 const std::string& notice) {
     const LabInfo& info = lab.info;
     char name[128];
@@ -129,14 +133,19 @@ void draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string
     ImGui::Separator();
 
     ImGui::PushItemWidth(150);
-    for (const Param& p : info.params) param_widget(p, params);
+    bool changed = false;
+    for (const Param& p : info.params) changed = param_widget(p, params) || changed;
     ImGui::PopItemWidth();
-    if (ImGui::Button("Reset to defaults")) params = default_params(lab);
+    if (ImGui::Button("Reset to defaults")) {
+        params = default_params(lab);
+        changed = true;
+    }
 
     ImGui::Separator();
     ImGui::TextUnformatted("R reload shaders   F12 screenshot   Esc quit");
     shortcut_table(info);
     ImGui::End();
+    return changed;
 }
 
 void draw_errors(const std::vector<std::string>& messages) {

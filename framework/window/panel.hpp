@@ -14,7 +14,8 @@ namespace fw::win {
 // colour editor; help as tooltip, shortcut key in the label), "Reset to
 // defaults", the keyboard shortcuts, frame rate and GL renderer, and
 // `notice` (that the window renders in software, and why) when not empty.
-void draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string& gl_renderer,
+// True when the user changed `params`.
+bool draw_panel(const RegisteredLab& lab, ParamValues& params, const std::string& gl_renderer,
                 const std::string& notice);
 
 // A red window at the bottom listing `messages` in full; nothing if empty.

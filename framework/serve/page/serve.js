@@ -135,6 +135,7 @@ function showProblems(problems) {
   state.problems = problems;
   const lines = [...(problems.shader_errors || [])];
   if (problems.render_error) lines.push(problems.render_error);
+  if (problems.input_error) lines.push(problems.input_error);
   $("problems").hidden = lines.length === 0;
   $("problems").textContent = lines.join("\n\n");
 }

@@ -1,4 +1,4 @@
-#include "framework/window/session.hpp"
+#include "framework/window/glfw.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
