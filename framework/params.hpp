@@ -169,6 +169,8 @@ public:
     // drag or scroll does; returns the value set.
     double set_clamped(const std::string& name, double value);
     double set_clamped(ParamId<float> id, double value) { return set_clamped(id.name, value); }
+    // The value itself, unclamped, for a handler that wraps an angle round.
+    double& number_ref(ParamId<float> id) { return number_ref(id.name); }
 
     // Direct, validated access for the window panel.
     double& number_ref(const std::string& name);

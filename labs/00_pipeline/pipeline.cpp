@@ -162,10 +162,10 @@ public:
         program_->use();
         program_->set(kMvpUniform, glm::mat4(1.0f));
 
-        switch (p.get<Scene>("scene")) {
+        switch (p[kScene]) {
             case Scene::Order: {
-                set_depth_test(p.flag("depth_test"));
-                const bool red_first = p.get<First>("first") == First::Red;
+                set_depth_test(p[kDepthTest]);
+                const bool red_first = p[kFirst] == First::Red;
                 glBindVertexArray(quads_.id());
                 glDrawArrays(GL_TRIANGLES, red_first ? kRedQuadFirst : kBlueQuadFirst,
                              kQuadVertices);
@@ -174,13 +174,12 @@ public:
                 break;
             }
             case Scene::Indexed:
-                draw_face_set(p.get<Storage>("storage"), faces_, flat_, face_index_count_);
+                draw_face_set(p[kStorage], faces_, flat_, face_index_count_);
                 break;
             case Scene::Primitives:
                 // The 6 vertices in their own order, assembled in the chosen mode.
                 glBindVertexArray(faces_.id());
-                glDrawArrays(static_cast<GLenum>(p.get<Primitive>("primitive")), 0,
-                             face_vertex_count_);
+                glDrawArrays(static_cast<GLenum>(p[kPrimitive]), 0, face_vertex_count_);
                 break;
             case Scene::Culling:
                 draw_cube(p, frame);
@@ -193,7 +192,7 @@ public:
     // "vertex_bytes": 144, "index_bytes": 48, "total_bytes": 192, "indexed":
     // {...}, "flat": {...}}.
     nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
-        if (p.get<Scene>("scene") != Scene::Indexed) return nlohmann::json::object();
+        if (p[kScene] != Scene::Indexed) return nlohmann::json::object();
         auto bytes = [](std::size_t vertex_bytes, std::size_t index_bytes) {
             return nlohmann::json{{"vertex_bytes", vertex_bytes},
                                   {"index_bytes", index_bytes},
@@ -201,17 +200,17 @@ public:
         };
         const nlohmann::json indexed = bytes(face_vbo_.size(), face_ibo_.size());
         const nlohmann::json flat = bytes(flat_vbo_.size(), 0);
-        nlohmann::json out = p.get<Storage>("storage") == Storage::Flat ? flat : indexed;
-        out["storage"] = p.text("storage");
+        nlohmann::json out = p[kStorage] == Storage::Flat ? flat : indexed;
+        out[kStorage.name] = p.text(kStorage.name);
         out["indexed"] = indexed;
         out["flat"] = flat;
         return out;
     }
 
     bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {
-        if (p.get<Scene>("scene") != Scene::Culling) return false;
-        p.number_ref("yaw") = wrap_degrees(p.number("yaw") + 0.5f * static_cast<float>(dx));
-        p.number_ref("pitch") = wrap_degrees(p.number("pitch") + 0.5f * static_cast<float>(dy));
+        if (p[kScene] != Scene::Culling) return false;
+        p.number_ref(kYaw) = wrap_degrees(p[kYaw] + 0.5f * static_cast<float>(dx));
+        p.number_ref(kPitch) = wrap_degrees(p[kPitch] + 0.5f * static_cast<float>(dy));
         return true;
     }
 
@@ -219,10 +218,10 @@ private:
     // scene=culling: the cube turned by yaw and pitch, seen in perspective.
     void draw_cube(const fw::ParamValues& p, const fw::Frame& frame) {
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-        program_->set(kMvpUniform, cube_mvp(p.number("yaw"), p.number("pitch"), aspect));
+        program_->set(kMvpUniform, cube_mvp(p[kYaw], p[kPitch], aspect));
 
-        set_depth_test(p.flag("depth_test"));
-        set_culling(p.get<Cull>("cull"));
+        set_depth_test(p[kDepthTest]);
+        set_culling(p[kCull]);
         glBindVertexArray(cube_.id());
         glDrawElements(GL_TRIANGLES, cube_index_count_, GL_UNSIGNED_INT, nullptr);
     }

@@ -16,33 +16,33 @@ constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
 
 std::vector<fw::Param> params() {
     return {
-        fw::Param::choice("scene", kScenes, Scene::Order)
+        fw::Param::choice(kScene, kScenes, Scene::Order)
             .help("order: two quads and the depth test; indexed: an indexed face set; "
                   "primitives: 6 vertices in each primitive mode; culling: a cube")
             .key('S'),
-        fw::Param::boolean("depth_test", true)
+        fw::Param::boolean(kDepthTest, true)
             .help("keep the nearest fragment (GL_LESS) instead of the last drawn (order, "
                   "culling)")
             .key('D'),
-        fw::Param::choice("first", kFirsts, First::Red)
+        fw::Param::choice(kFirst, kFirsts, First::Red)
             .help("which quad is drawn first (order)")
             .key('F'),
-        fw::Param::choice("storage", kStorages, Storage::Indexed)
+        fw::Param::choice(kStorage, kStorages, Storage::Indexed)
             .help("6 vertices + 12 indices, or the 12 vertices they expand to (indexed)")
             .key('I'),
-        fw::Param::choice("primitive", kPrimitives, Primitive::Triangles)
+        fw::Param::choice(kPrimitive, kPrimitives, Primitive::Triangles)
             .help("how the 6 vertices are assembled (primitives)")
             .key('P'),
-        fw::Param::choice("cull", kCulls, Cull::Back)
+        fw::Param::choice(kCull, kCulls, Cull::Back)
             .help("which faces are culled; front faces are counter-clockwise (culling)")
             .key('C'),
-        fw::Param::number("yaw", 30)
+        fw::Param::number(kYaw, 30)
             .range(-180, 180)
             .step(15)
             .unit("deg")
             .help("cube rotation about the y axis, applied first (culling)")
             .key('Y'),
-        fw::Param::number("pitch", 20)
+        fw::Param::number(kPitch, 20)
             .range(-180, 180)
             .step(15)
             .unit("deg")

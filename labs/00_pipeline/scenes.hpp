@@ -46,7 +46,15 @@ enum class Cull { None, Back, Front };
 constexpr fw::Choice<Cull> kCulls[] = {
     {Cull::None, "none"}, {Cull::Back, "back"}, {Cull::Front, "front"}};
 
-// The lab's parameters.
+// The lab's parameters: each named once, by its handle, for params() and draw().
+constexpr fw::ParamId<Scene> kScene{"scene"};
+constexpr fw::ParamId<bool> kDepthTest{"depth_test"};
+constexpr fw::ParamId<First> kFirst{"first"};
+constexpr fw::ParamId<Storage> kStorage{"storage"};
+constexpr fw::ParamId<Primitive> kPrimitive{"primitive"};
+constexpr fw::ParamId<Cull> kCull{"cull"};
+constexpr fw::ParamId<float> kYaw{"yaw"};
+constexpr fw::ParamId<float> kPitch{"pitch"};
 std::vector<fw::Param> params();
 
 // scene=culling: P * V * M, the camera on the +z axis looking at the cube's

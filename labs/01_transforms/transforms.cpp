@@ -70,9 +70,16 @@ constexpr std::array<fw::Choice<Order>, kOrderCount> order_choices() {
     return choices;
 }
 
+// The lab's parameters, each named once.
+constexpr fw::ParamId<float> kTx{"tx"};
+constexpr fw::ParamId<float> kTy{"ty"};
+constexpr fw::ParamId<float> kAngle{"angle"};
+constexpr fw::ParamId<float> kSx{"sx"};
+constexpr fw::ParamId<float> kSy{"sy"};
+constexpr fw::ParamId<Order> kOrder{"order"};
+
 glm::mat4 model_of(const fw::ParamValues& p) {
-    return model_matrix(p.number("tx"), p.number("ty"), p.number("angle"), p.number("sx"),
-                        p.number("sy"), static_cast<int>(p.get<Order>("order")));
+    return model_matrix(p[kTx], p[kTy], p[kAngle], p[kSx], p[kSy], static_cast<int>(p[kOrder]));
 }
 
 }  // namespace
@@ -82,24 +89,24 @@ public:
     static fw::LabInfo info() {
         fw::LabInfo i;
         i.title = "Homogeneous coordinates and composition";
-        auto coordinate = [](const char* name, const char* h, int k) {
-            return fw::Param::number(name, 0).range(-2, 2).step(0.25).unit("world").help(h).key(k);
+        auto coordinate = [](fw::ParamId<float> id, const char* h, int k) {
+            return fw::Param::number(id, 0).range(-2, 2).step(0.25).unit("world").help(h).key(k);
         };
-        auto factor = [](const char* name, const char* h, int k) {
-            return fw::Param::number(name, 1).range(-3, 3).step(0.25).help(h).key(k);
+        auto factor = [](fw::ParamId<float> id, const char* h, int k) {
+            return fw::Param::number(id, 1).range(-3, 3).step(0.25).help(h).key(k);
         };
         i.params = {
-            coordinate("tx", "translation T along x", 'X'),
-            coordinate("ty", "translation T along y", 'Y'),
-            fw::Param::number("angle", 0)
+            coordinate(kTx, "translation T along x", 'X'),
+            coordinate(kTy, "translation T along y", 'Y'),
+            fw::Param::number(kAngle, 0)
                 .range(-360, 360)
                 .step(15)
                 .unit("deg")
                 .help("rotation R about z, counter-clockwise")
                 .key('A'),
-            factor("sx", "scale S along x (negative mirrors)", 'U'),
-            factor("sy", "scale S along y (negative mirrors)", 'V'),
-            fw::Param::choice("order", order_choices(), Order::Trs)
+            factor(kSx, "scale S along x (negative mirrors)", 'U'),
+            factor(kSy, "scale S along y (negative mirrors)", 'V'),
+            fw::Param::choice(kOrder, order_choices(), Order::Trs)
                 .help("M is the product of T, R and S in this order, left to right: trs is "
                       "M = T R S (S acts first)")
                 .key('O'),
@@ -155,7 +162,7 @@ public:
         nlohmann::json rows = nlohmann::json::array();
         for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
         const glm::vec4 centre = m * glm::vec4(kMarkerCentre, 0.0f, 1.0f);
-        return {{"order", p.text("order")},
+        return {{kOrder.name, p.text(kOrder.name)},
                 {"model_rows", rows},
                 {"marker_centre", {centre.x, centre.y}}};
     }
@@ -164,13 +171,13 @@ public:
     // units. Each parameter stays in its declared range.
     bool on_drag(fw::ParamValues& p, const fw::Frame& frame, double dx, double dy) override {
         const double world = 2.0 * kWorldHalfSize;
-        p.set_clamped("tx", p.number("tx") + dx * world / frame.width);
-        p.set_clamped("ty", p.number("ty") + dy * world / frame.height);
+        p.set_clamped(kTx, p[kTx] + dx * world / frame.width);
+        p.set_clamped(kTy, p[kTy] + dy * world / frame.height);
         return true;
     }
 
     bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
-        p.set_clamped("angle", p.number("angle") + 15.0 * steps);
+        p.set_clamped(kAngle, p[kAngle] + 15.0 * steps);
         return true;
     }
 

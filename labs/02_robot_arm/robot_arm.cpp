@@ -71,10 +71,14 @@ Part add_disc(std::vector<Vertex>& out, float radius, int segments, glm::vec3 co
     return part;
 }
 
+// The lab's parameters, the joint angles in degrees, each named once.
+constexpr fw::ParamId<float> kShoulder{"shoulder"};
+constexpr fw::ParamId<float> kHand{"hand"};
+constexpr fw::ParamId<float> kGrip{"grip"};
+
 // The joint angles of `p`, through the student's hierarchy.
 std::vector<glm::mat4> pose(const fw::ParamValues& p) {
-    std::vector<glm::mat4> m =
-        arm_matrices(p.number("shoulder"), p.number("hand"), p.number("grip"));
+    std::vector<glm::mat4> m = arm_matrices(p[kShoulder], p[kHand], p[kGrip]);
     if (m.size() != kMatrixCount)
         throw fw::Error("arm_matrices() returned " + std::to_string(m.size()) +
                         " matrices; it must return 5: {S, J, H, upper finger, lower finger}");
@@ -93,20 +97,20 @@ public:
         fw::LabInfo i;
         i.title = "The hierarchy S, J = S T, H = J R";
         i.params = {
-            fw::Param::number("shoulder", 30)
+            fw::Param::number(kShoulder, 30)
                 .range(-180, 180)
                 .step(15)
                 .unit("deg")
                 .help("the arm's turn about the shoulder (-1.5, -1.5): "
                       "S = translate(-1.5, -1.5) * rotateZ(shoulder)")
                 .key('S'),
-            fw::Param::number("hand", -45)
+            fw::Param::number(kHand, -45)
                 .range(-150, 150)
                 .step(15)
                 .unit("deg")
                 .help("the hand's turn about the elbow, relative to the arm: R = rotateZ(hand)")
                 .key('H'),
-            fw::Param::number("grip", 20)
+            fw::Param::number(kGrip, 20)
                 .range(0, 90)
                 .step(10)
                 .unit("deg")
@@ -165,13 +169,13 @@ public:
     bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {
         // Half a degree per pixel; the shoulder turns round and round, the
         // hand stops at the ends of its range.
-        p.number_ref("shoulder") = std::remainder(p.number("shoulder") + 0.5 * dx, 360.0);
-        p.set_clamped("hand", p.number("hand") + 0.5 * dy);
+        p.number_ref(kShoulder) = std::remainder(p[kShoulder] + 0.5 * dx, 360.0);
+        p.set_clamped(kHand, p[kHand] + 0.5 * dy);
         return true;
     }
 
     bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
-        p.set_clamped("grip", p.number("grip") + 5.0 * steps);
+        p.set_clamped(kGrip, p[kGrip] + 5.0 * steps);
         return true;
     }
 

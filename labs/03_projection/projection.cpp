@@ -36,6 +36,20 @@ enum class Mode { Perspective, Orthographic };
 constexpr fw::Choice<Mode> kModes[] = {{Mode::Perspective, "perspective"},
                                        {Mode::Orthographic, "orthographic"}};
 
+// The lab's parameters, each named once. A point is three of them, x, y, z.
+struct PointParam {
+    fw::ParamId<float> x, y, z;
+};
+constexpr fw::ParamId<Scene> kScene{"scene"};
+constexpr fw::ParamId<Show> kShow{"show"};
+constexpr fw::ParamId<Mode> kMode{"mode"};
+constexpr fw::ParamId<float> kFov{"fov"};
+constexpr fw::ParamId<float> kNear{"near"};
+constexpr fw::ParamId<float> kFar{"far"};
+constexpr fw::ParamId<float> kOrthoSize{"ortho_size"};
+constexpr PointParam kEye{{"eye_x"}, {"eye_y"}, {"eye_z"}};
+constexpr PointParam kTarget{{"target_x"}, {"target_y"}, {"target_z"}};
+
 // Uniforms of projection.vert (the matrices) and projection.frag.
 constexpr const char* kModelUniform = "u_model";
 constexpr const char* kViewUniform = "u_view";
@@ -48,28 +62,28 @@ constexpr const char* kFarUniform = "u_far";
 
 const glm::vec3 kUp{0.0f, 1.0f, 0.0f};
 
-glm::vec3 vec3_param(const fw::ParamValues& p, const std::string& prefix) {
-    return {p.number(prefix + "_x"), p.number(prefix + "_y"), p.number(prefix + "_z")};
+glm::vec3 vec3_param(const fw::ParamValues& p, const PointParam& point) {
+    return {p[point.x], p[point.y], p[point.z]};
 }
 
 // V = lookAt(eye, target, (0, 1, 0)).
 glm::mat4 view_matrix(const fw::ParamValues& p) {
-    return lookAt(vec3_param(p, "eye"), vec3_param(p, "target"), kUp);
+    return lookAt(vec3_param(p, kEye), vec3_param(p, kTarget), kUp);
 }
 
 // P: perspective(fov, W/H, near, far), or orthographic with the half-height
 // s = ortho_size and the half-width s * W/H, so that squares stay square.
 glm::mat4 projection_matrix(const fw::ParamValues& p, float aspect) {
-    const float n = p.number("near"), f = p.number("far");
-    if (p.get<Mode>("mode") == Mode::Orthographic) {
-        const float s = p.number("ortho_size");
+    const float n = p[kNear], f = p[kFar];
+    if (p[kMode] == Mode::Orthographic) {
+        const float s = p[kOrthoSize];
         return orthographic(-s * aspect, s * aspect, -s, s, n, f);
     }
-    return perspective(p.number("fov"), aspect, n, f);
+    return perspective(p[kFov], aspect, n, f);
 }
 
-fw::Param coordinate(const std::string& name, double def, const std::string& what, int key) {
-    return fw::Param::number(name, def).range(-50, 50).step(0.5).help(what).key(key);
+fw::Param coordinate(fw::ParamId<float> id, double def, const std::string& what, int key) {
+    return fw::Param::number(id, def).range(-50, 50).step(0.5).help(what).key(key);
 }
 
 }  // namespace
@@ -80,45 +94,45 @@ public:
         fw::LabInfo i;
         i.title = "Camera, perspective and the depth buffer";
         i.params = {
-            fw::Param::choice("scene", kScenes, Scene::Cards)
+            fw::Param::choice(kScene, kScenes, Scene::Cards)
                 .help("cards: five squares at distances 2 to 32; zfight: two tilted quads "
                       "0.002 apart, 20 units away")
                 .key('S'),
-            fw::Param::choice("show", kShows, Show::Color)
+            fw::Param::choice(kShow, kShows, Show::Color)
                 .help("each square's colour, or its linearised depth as grey (near black, "
                       "far white)")
                 .key('D'),
-            fw::Param::choice("mode", kModes, Mode::Perspective)
+            fw::Param::choice(kMode, kModes, Mode::Perspective)
                 .help("perspective(fov, W/H, near, far) or orthographic(-s W/H, s W/H, -s, s, "
                       "near, far), s = ortho_size")
                 .key('M'),
-            fw::Param::number("fov", 60)
+            fw::Param::number(kFov, 60)
                 .range(10, 150)
                 .step(5)
                 .unit("deg")
                 .help("vertical field of view (perspective)")
                 .key('V'),
-            fw::Param::number("near", 1)
+            fw::Param::number(kNear, 1)
                 .range(0.0001, 10)
                 .step(0.25)
                 .help("distance of the near plane; must be less than far")
                 .key('N'),
-            fw::Param::number("far", 50)
+            fw::Param::number(kFar, 50)
                 .range(0.1, 1000)
                 .step(10)
                 .help("distance of the far plane; must exceed near")
                 .key('F'),
-            fw::Param::number("ortho_size", 2)
+            fw::Param::number(kOrthoSize, 2)
                 .range(0.1, 50)
                 .step(0.5)
                 .help("half the height of the orthographic view volume (orthographic)")
                 .key('O'),
-            coordinate("eye_x", 0, "eye position, x (world)", 'X'),
-            coordinate("eye_y", 0, "eye position, y (world)", 'Y'),
-            coordinate("eye_z", 0, "eye position, z (world)", 'Z'),
-            coordinate("target_x", 0, "point the eye looks at, x (world)", 'J'),
-            coordinate("target_y", 0, "point the eye looks at, y (world)", 'K'),
-            coordinate("target_z", -1, "point the eye looks at, z (world)", 'L'),
+            coordinate(kEye.x, 0, "eye position, x (world)", 'X'),
+            coordinate(kEye.y, 0, "eye position, y (world)", 'Y'),
+            coordinate(kEye.z, 0, "eye position, z (world)", 'Z'),
+            coordinate(kTarget.x, 0, "point the eye looks at, x (world)", 'J'),
+            coordinate(kTarget.y, 0, "point the eye looks at, y (world)", 'K'),
+            coordinate(kTarget.z, -1, "point the eye looks at, z (world)", 'L'),
         };
         i.controls = {"drag: orbit the eye around the target at the same distance",
                       "wheel: field of view (fov)"};
@@ -151,13 +165,13 @@ public:
         program_->use();
         program_->set(kViewUniform, view_matrix(p));
         program_->set(kProjectionUniform, projection_matrix(p, aspect));
-        program_->set(kShowDepthUniform, p.get<Show>("show") == Show::Depth);
-        program_->set(kOrthographicUniform, p.get<Mode>("mode") == Mode::Orthographic);
-        program_->set(kNearUniform, p.number("near"));
-        program_->set(kFarUniform, p.number("far"));
+        program_->set(kShowDepthUniform, p[kShow] == Show::Depth);
+        program_->set(kOrthographicUniform, p[kMode] == Mode::Orthographic);
+        program_->set(kNearUniform, p[kNear]);
+        program_->set(kFarUniform, p[kFar]);
         // Every object is the same square, placed by its own model matrix.
         glBindVertexArray(square_.id());
-        for (const Object& object : scene_objects(p.get<Scene>("scene"))) {
+        for (const Object& object : scene_objects(p[kScene])) {
             program_->set(kModelUniform, object.model);
             program_->set(kColorUniform, object.color);
             glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(square_.vertex_count()));
@@ -171,7 +185,7 @@ public:
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
         const glm::mat4 clip_from_world = projection_matrix(p, aspect) * view_matrix(p);
         nlohmann::json centres = nlohmann::json::array();
-        for (const Object& object : scene_objects(p.get<Scene>("scene"))) {
+        for (const Object& object : scene_objects(p[kScene])) {
             const glm::vec4 clip = clip_from_world * object.model * glm::vec4(0, 0, 0, 1);
             const glm::vec3 window = viewport(glm::vec3(clip) / clip.w, frame.width, frame.height);
             centres.push_back({{"object", object.name},
@@ -184,10 +198,10 @@ public:
     // far > near, and a camera that lookAt can build: the eye away from the
     // target, and a view direction that is not parallel to up (0, 1, 0).
     std::string validate(const fw::ParamValues& p) const override {
-        if (!(p.number("far") > p.number("near")))
-            return "far (" + p.text("far") + ") must exceed near (" + p.text("near") +
+        if (!(p[kFar] > p[kNear]))
+            return "far (" + p.text(kFar.name) + ") must exceed near (" + p.text(kNear.name) +
                    "); raise far or lower near";
-        const glm::vec3 view = vec3_param(p, "target") - vec3_param(p, "eye");
+        const glm::vec3 view = vec3_param(p, kTarget) - vec3_param(p, kEye);
         if (glm::length(view) == 0.0f)
             return "the eye (eye_x/y/z) is at the target (target_x/y/z), so lookAt has no "
                    "view direction; move one of them";
@@ -202,8 +216,8 @@ public:
     // elevation stops short of the poles, where the view would be parallel
     // to up.
     bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {
-        const glm::dvec3 target = vec3_param(p, "target");
-        const glm::dvec3 offset = glm::dvec3(vec3_param(p, "eye")) - target;
+        const glm::dvec3 target = vec3_param(p, kTarget);
+        const glm::dvec3 offset = glm::dvec3(vec3_param(p, kEye)) - target;
         const double r = glm::length(offset);
         if (r == 0.0) return false;
         const double yaw = std::atan2(offset.x, offset.z) - 0.01 * dx;
@@ -211,15 +225,15 @@ public:
         const glm::dvec3 eye =
             target + r * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
                                     std::cos(pitch) * std::cos(yaw));
-        p.set_clamped("eye_x", eye.x);
-        p.set_clamped("eye_y", eye.y);
-        p.set_clamped("eye_z", eye.z);
+        p.set_clamped(kEye.x, eye.x);
+        p.set_clamped(kEye.y, eye.y);
+        p.set_clamped(kEye.z, eye.z);
         return true;
     }
 
     // The wheel zooms: up narrows the field of view by 5 degrees a step.
     bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
-        p.set_clamped("fov", p.number("fov") - 5.0 * steps);
+        p.set_clamped(kFov, p[kFov] - 5.0 * steps);
         return true;
     }
 

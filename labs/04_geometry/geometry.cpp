@@ -107,15 +107,15 @@ public:
         glFrontFace(GL_CCW);
         glCullFace(GL_BACK);
 
-        const Mode mode = p.get<Mode>("mode");
+        const Mode mode = p[kMode];
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-        const Transforms transforms{model_matrix(p.number("spin")), view_projection(aspect)};
+        const Transforms transforms{model_matrix(p[kSpin]), view_projection(aspect)};
         const fw::Program& shaded = shaded_program(mode, p, frame, transforms);
 
         // The icosphere's triangles, 3 indices each (GL_UNSIGNED_INT, in the
         // element buffer the vertex array holds): the geometry shader receives
         // each triangle whole.
-        const Mesh& mesh = meshes_[static_cast<std::size_t>(p.integer("subdiv"))];
+        const Mesh& mesh = meshes_[static_cast<std::size_t>(p[kSubdiv])];
         const auto index_count = static_cast<GLsizei>(mesh.vao.index_count());
         shaded.use();
         glBindVertexArray(mesh.vao.id());
@@ -125,7 +125,7 @@ public:
             // through the geometry shader that turns each into three lines.
             set_transforms(*normals_, transforms);
             normals_->set(kColorUniform, kYellow);
-            normals_->set_if_active(kLengthUniform, p.number("length"));
+            normals_->set_if_active(kLengthUniform, p[kLength]);
             normals_->use();
             glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
         }
@@ -134,13 +134,13 @@ public:
 
     // The mesh's size: {"triangles": 320, "vertices": 162} at subdiv 2.
     nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
-        const Mesh& mesh = meshes_[static_cast<std::size_t>(p.integer("subdiv"))];
+        const Mesh& mesh = meshes_[static_cast<std::size_t>(p[kSubdiv])];
         return {{"triangles", mesh.vao.index_count() / 3}, {"vertices", mesh.vao.vertex_count()}};
     }
 
     bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double /*dy*/) override {
         // Half a degree per pixel, wrapped into [-180, 180].
-        p.number_ref("spin") = std::remainder(p.number("spin") + 0.5 * dx, 360.0);
+        p.number_ref(kSpin) = std::remainder(p[kSpin] + 0.5 * dx, 360.0);
         return true;
     }
 
@@ -169,8 +169,7 @@ private:
                 break;
             case Mode::Duplicate: {
                 shaded = duplicate_;
-                const glm::vec3 offset{p.number("offset_x"), p.number("offset_y"),
-                                       p.number("offset_z")};
+                const glm::vec3 offset{p[kOffsetX], p[kOffsetY], p[kOffsetZ]};
                 // model * (q + offset) = model * q + mat3(model) * offset.
                 shaded->set_if_active(kOffsetUniform, glm::mat3(t.model) * offset);
                 shaded->set_if_active(kTintUniform, kTint);
@@ -178,7 +177,7 @@ private:
             }
             case Mode::Explode:
                 shaded = explode_;
-                shaded->set_if_active(kAmountUniform, p.number("amount"));
+                shaded->set_if_active(kAmountUniform, p[kAmount]);
                 break;
             case Mode::Wireframe:
                 shaded = wireframe_;

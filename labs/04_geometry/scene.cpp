@@ -19,42 +19,42 @@ constexpr float kFovYDegrees = 45.0f, kNear = 0.1f, kFar = 100.0f;
 
 std::vector<fw::Param> params() {
     return {
-        fw::Param::choice("mode", kModes, Mode::Passthrough)
+        fw::Param::choice(kMode, kModes, Mode::Passthrough)
             .help("passthrough: re-emit each triangle; duplicate: add a moved, tinted copy; "
                   "explode: move each triangle along its face normal; normals: draw vertex "
                   "normals as lines; wireframe: edges from distances in the same pass")
             .key('M'),
-        fw::Param::integer("subdiv", 2)
+        fw::Param::integer(kSubdiv, 2)
             .range(0, kMaxSubdiv)
             .help("subdivisions of the icosahedron: 20 * 4^subdiv triangles")
             .key('S'),
-        fw::Param::number("spin", 0)
+        fw::Param::number(kSpin, 0)
             .range(-180, 180)
             .step(15)
             .unit("deg")
             .help("model rotation about the y axis")
             .key('Y'),
-        fw::Param::number("amount", 0.2)
+        fw::Param::number(kAmount, 0.2)
             .range(0, 1)
             .step(0.05)
             .help("how far each triangle moves along its face normal (explode)")
             .key('A'),
-        fw::Param::number("offset_x", 1.5)
+        fw::Param::number(kOffsetX, 1.5)
             .range(-3, 3)
             .step(0.25)
             .help("x of the copy's offset in object space (duplicate)")
             .key('X'),
-        fw::Param::number("offset_y", 0)
+        fw::Param::number(kOffsetY, 0)
             .range(-3, 3)
             .step(0.25)
             .help("y (up) of the copy's offset in object space (duplicate)")
             .key('U'),
-        fw::Param::number("offset_z", -1.5)
+        fw::Param::number(kOffsetZ, -1.5)
             .range(-3, 3)
             .step(0.25)
             .help("z of the copy's offset in object space (duplicate)")
             .key('Z'),
-        fw::Param::number("length", 0.15)
+        fw::Param::number(kLength, 0.15)
             .range(0, 0.5)
             .step(0.05)
             .help("length of each normal line (normals)")

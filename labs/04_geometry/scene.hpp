@@ -23,7 +23,15 @@ constexpr fw::Choice<Mode> kModes[] = {{Mode::Passthrough, "passthrough"},
 // The finest icosphere: `subdiv` runs from 0 to kMaxSubdiv.
 constexpr int kMaxSubdiv = 5;
 
-// The lab's parameters.
+// The lab's parameters: each named once, by its handle, for params() and draw().
+constexpr fw::ParamId<Mode> kMode{"mode"};
+constexpr fw::ParamId<int> kSubdiv{"subdiv"};
+constexpr fw::ParamId<float> kSpin{"spin"};
+constexpr fw::ParamId<float> kAmount{"amount"};
+constexpr fw::ParamId<float> kOffsetX{"offset_x"};
+constexpr fw::ParamId<float> kOffsetY{"offset_y"};
+constexpr fw::ParamId<float> kOffsetZ{"offset_z"};
+constexpr fw::ParamId<float> kLength{"length"};
 std::vector<fw::Param> params();
 
 // 24 bytes: two vec3, no padding. Read by shaders/04_geometry/mesh.vert.

@@ -24,11 +24,11 @@ constexpr float kWaveSpeed = glm::pi<float>();  // radians per second
 
 constexpr double kMinLevel = 1.0, kMaxLevel = 64.0;
 
-fw::Param level(const char* name, int key, const char* what) {
-    return fw::Param::number(name, 4)
+fw::Param level(fw::ParamId<float> id, int key) {
+    return fw::Param::number(id, 4)
         .range(kMinLevel, kMaxLevel)
         .step(1)
-        .help(std::string(what) +
+        .help(std::string(id.name) +
               " tessellation level of every patch; fractions matter with "
               "the fractional spacings")
         .key(key);
@@ -38,40 +38,40 @@ fw::Param level(const char* name, int key, const char* what) {
 
 std::vector<fw::Param> params() {
     return {
-        fw::Param::choice("scene", kScenes, Scene::Triangle)
+        fw::Param::choice(kScene, kScenes, Scene::Triangle)
             .help("triangle: one flat patch; sphere: the icosahedron's 20 faces pushed onto "
                   "the sphere; flag: the waving flag; param_sphere: the parametric sphere")
             .key('S'),
-        level("inner", 'I', "inner"),
-        level("outer", 'O', "outer"),
-        fw::Param::choice("spacing", kSpacings, Spacing::Equal)
+        level(kInner, 'I'),
+        level(kOuter, 'O'),
+        fw::Param::choice(kSpacing, kSpacings, Spacing::Equal)
             .help("how a level becomes segments: equal rounds up; fractional_even and "
                   "fractional_odd round up to an even or odd count, two segments shorter")
             .key('P'),
-        fw::Param::boolean("wireframe", true)
+        fw::Param::boolean(kWireframe, true)
             .help("draw the tessellated triangles' edges in white")
             .key('W'),
-        fw::Param::choice("show", kShows, Show::Shaded)
+        fw::Param::choice(kShow, kShows, Show::Shaded)
             .help("shaded: fill colour or Lambert; normals: the unit normal n as the colour "
                   "0.5 n + 0.5")
             .key('N'),
-        fw::Param::number("D", 0.15)
+        fw::Param::number(kFlagD, 0.15)
             .range(0, 0.5)
             .step(0.05)
             .help("depth of the flag's wave: r.z = sin(K pi u + phase) D (flag)")
             .key('D'),
-        fw::Param::number("K", 2)
+        fw::Param::number(kFlagK, 2)
             .range(0, 8)
             .step(0.5)
             .help("half-waves across the flag (flag)")
             .key('K'),
-        fw::Param::number("phase", 0)
+        fw::Param::number(kPhase, 0)
             .range(0, 360)
             .step(15)
             .unit("deg")
             .help("the wave's phase (flag)")
             .key('H'),
-        fw::Param::boolean("animate", false)
+        fw::Param::boolean(kAnimate, false)
             .help("in the window, the phase grows by 180 degrees a second (flag)")
             .key('A'),
     };

@@ -32,7 +32,18 @@ constexpr fw::Choice<Spacing> kSpacings[] = {{Spacing::Equal, "equal"},
 enum class Show { Shaded, Normals };
 constexpr fw::Choice<Show> kShows[] = {{Show::Shaded, "shaded"}, {Show::Normals, "normals"}};
 
-// The lab's parameters (labs/05_tessellation/README.md, Parameters).
+// The lab's parameters (labs/05_tessellation/README.md, Parameters): each
+// named once, by its handle, for params() and draw().
+constexpr fw::ParamId<Scene> kScene{"scene"};
+constexpr fw::ParamId<float> kInner{"inner"};
+constexpr fw::ParamId<float> kOuter{"outer"};
+constexpr fw::ParamId<Spacing> kSpacing{"spacing"};
+constexpr fw::ParamId<bool> kWireframe{"wireframe"};
+constexpr fw::ParamId<Show> kShow{"show"};
+constexpr fw::ParamId<float> kFlagD{"D"};
+constexpr fw::ParamId<float> kFlagK{"K"};
+constexpr fw::ParamId<float> kPhase{"phase"};
+constexpr fw::ParamId<bool> kAnimate{"animate"};
 std::vector<fw::Param> params();
 
 // The scene's evaluation shader, a file of shaders/05_tessellation/.

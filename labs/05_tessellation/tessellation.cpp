@@ -111,8 +111,8 @@ public:
         glDepthFunc(GL_LESS);
         glDisable(GL_CULL_FACE);
 
-        const Scene scene = p.get<Scene>("scene");
-        const fw::Program& program = *programs_[index(scene)][index(p.get<Spacing>("spacing"))];
+        const Scene scene = p[kScene];
+        const fw::Program& program = *programs_[index(scene)][index(p[kSpacing])];
         set_uniforms(program, scene, p, frame);
         program.use();
         draw_patches(scene);
@@ -120,14 +120,14 @@ public:
 
     // The patches drawn and their domain: {"patches": 20, "domain": "triangles"}.
     nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
-        const Scene scene = p.get<Scene>("scene");
+        const Scene scene = p[kScene];
         const std::size_t patches = scene == Scene::Sphere ? ico_.index_count() / 3 : 1;
         return {{"patches", patches}, {"domain", quad_patches(scene) ? "quads" : "triangles"}};
     }
 
     // Scroll: both levels up or down by one a step, within their range [1, 64].
     bool on_scroll(fw::ParamValues& p, const fw::Frame&, double steps) override {
-        for (const char* name : {"inner", "outer"}) p.set_clamped(name, p.number(name) + steps);
+        for (const fw::ParamId<float> id : {kInner, kOuter}) p.set_clamped(id, p[id] + steps);
         return true;
     }
 
@@ -137,10 +137,10 @@ private:
                              const fw::Frame& frame) {
         // The uniforms that only the student parts read are set with
         // set_if_active(): the compiler removes them until that part is written.
-        program.set_if_active(kInnerUniform, p.number("inner"));
-        program.set_if_active(kOuterUniform, p.number("outer"));
+        program.set_if_active(kInnerUniform, p[kInner]);
+        program.set_if_active(kOuterUniform, p[kOuter]);
         program.set(kViewportUniform, glm::vec2(frame.width, frame.height));
-        program.set(kWireframeUniform, p.flag("wireframe"));
+        program.set(kWireframeUniform, p[kWireframe]);
         program.set(kEdgeColorUniform, kWhite);
         program.set(kLightDirUniform, kLightDir);
 
@@ -149,13 +149,12 @@ private:
         if (scene == Scene::Flag) {
             program.set_if_active(kFlagWUniform, kFlagW);
             program.set_if_active(kFlagHUniform, kFlagH);
-            program.set_if_active(kFlagDUniform, p.number("D"));
-            program.set_if_active(kFlagKUniform, p.number("K"));
-            program.set_if_active(kPhaseUniform,
-                                  flag_phase(p.number("phase"), p.flag("animate"), frame.time));
+            program.set_if_active(kFlagDUniform, p[kFlagD]);
+            program.set_if_active(kFlagKUniform, p[kFlagK]);
+            program.set_if_active(kPhaseUniform, flag_phase(p[kPhase], p[kAnimate], frame.time));
         }
 
-        const bool normals = p.get<Show>("show") == Show::Normals;
+        const bool normals = p[kShow] == Show::Normals;
         const Shading shading = normals                    ? Shading::Normal
                                 : scene == Scene::Triangle ? Shading::Fill
                                                            : Shading::Lambert;

@@ -64,14 +64,27 @@ enum class Shading { Gouraud = SHADING_GOURAUD, Phong = SHADING_PHONG, Toon = SH
 constexpr fw::Choice<Shading> kShadings[] = {
     {Shading::Gouraud, "gouraud"}, {Shading::Phong, "phong"}, {Shading::Toon, "toon"}};
 
+// The lab's parameters, each named once.
+constexpr fw::ParamId<Scene> kScene{"scene"};
+constexpr fw::ParamId<Qualifier> kQualifier{"qualifier"};
+constexpr fw::ParamId<glm::vec3> kColorA{"color_a"};
+constexpr fw::ParamId<glm::vec3> kColorB{"color_b"};
+constexpr fw::ParamId<glm::vec3> kColorC{"color_c"};
+constexpr fw::ParamId<int> kChecks{"checks"};
+constexpr fw::ParamId<Shading> kShading{"shading"};
+constexpr fw::ParamId<int> kSubdiv{"subdiv"};
+constexpr fw::ParamId<float> kLightX{"light_x"};
+constexpr fw::ParamId<float> kLightY{"light_y"};
+constexpr fw::ParamId<float> kLightZ{"light_z"};
+
 // The lecture's material and light: ka La + (kd cos(theta) + ks cos(delta)^shine) Le.
 const glm::vec3 kKa{0.1f}, kKd{0.8f, 0.3f, 0.2f}, kKs{0.5f}, kLa{1.0f}, kLe{1.0f};
 constexpr float kShine = 32.0f;
 
 // The light's coordinates, in world units; on_drag clamps them to this range.
 constexpr float kLightRange = 10.0f;
-fw::Param light_coordinate(char axis, double def) {
-    return fw::Param::number(std::string("light_") + axis, def)
+fw::Param light_coordinate(fw::ParamId<float> id, char axis, double def) {
+    return fw::Param::number(id, def)
         .range(-kLightRange, kLightRange)
         .step(0.5)
         .help(std::string("the point light's ") + axis + " (shading)")
@@ -86,32 +99,32 @@ public:
         fw::LabInfo i;
         i.title = "What the rasterizer interpolates";
         i.params = {
-            fw::Param::choice("scene", kScenes, Scene::Triangle)
+            fw::Param::choice(kScene, kScenes, Scene::Triangle)
                 .help("triangle: one colour per vertex; plane: a checkered floor in "
                       "perspective; shading: a lit icosphere")
                 .key('S'),
-            fw::Param::choice("qualifier", kQualifiers, Qualifier::Smooth)
+            fw::Param::choice(kQualifier, kQualifiers, Qualifier::Smooth)
                 .help("how the fragment shader's input is interpolated (triangle, plane)")
                 .key('Q'),
-            fw::Param::color("color_a", "ff0000").help("colour of A (-0.8, -0.8) (triangle)"),
-            fw::Param::color("color_b", "ffffff").help("colour of B (0.8, -0.8) (triangle)"),
-            fw::Param::color("color_c", "ffffff")
+            fw::Param::color(kColorA, "ff0000").help("colour of A (-0.8, -0.8) (triangle)"),
+            fw::Param::color(kColorB, "ffffff").help("colour of B (0.8, -0.8) (triangle)"),
+            fw::Param::color(kColorC, "ffffff")
                 .help("colour of C (0, 0.8), the provoking vertex (triangle)"),
-            fw::Param::integer("checks", 8)
+            fw::Param::integer(kChecks, 8)
                 .range(1, 64)
                 .help("checkerboard cells along u and along v (plane)")
                 .key('C'),
-            fw::Param::choice("shading", kShadings, Shading::Gouraud)
+            fw::Param::choice(kShading, kShadings, Shading::Gouraud)
                 .help("gouraud: lit per vertex; phong: lit per pixel; toon: three tones and "
                       "an outline (shading)")
                 .key('H'),
-            fw::Param::integer("subdiv", 3)
+            fw::Param::integer(kSubdiv, 3)
                 .range(0, 6)
                 .help("icosphere subdivisions: 20 * 4^subdiv triangles (shading)")
                 .key('U'),
-            light_coordinate('x', 2),
-            light_coordinate('y', 2),
-            light_coordinate('z', 3),
+            light_coordinate(kLightX, 'x', 2),
+            light_coordinate(kLightY, 'y', 2),
+            light_coordinate(kLightZ, 'z', 3),
         };
         i.controls = {"drag: move the light in x and y (scene shading)"};
         return i;
@@ -146,7 +159,7 @@ public:
         glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
         glDisable(GL_CULL_FACE);
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-        const Scene scene = p.get<Scene>("scene");
+        const Scene scene = p[kScene];
 
         if (scene == Scene::Shading) {
             draw_sphere(p, aspect);
@@ -157,14 +170,12 @@ public:
         // The enum's value is the shader's QUALIFIER_* (shared.glsl). The
         // uniform is set only while active: until the student qualifies the
         // three inputs they carry the same value, and the compiler may drop it.
-        interpolate_->set_if_active(kQualifierUniform,
-                                    static_cast<int>(p.get<Qualifier>("qualifier")));
+        interpolate_->set_if_active(kQualifierUniform, static_cast<int>(p[kQualifier]));
         interpolate_->set(kCheckerboardUniform, scene == Scene::Plane);
-        interpolate_->set(kChecksUniform, static_cast<float>(p.integer("checks")));
+        interpolate_->set(kChecksUniform, static_cast<float>(p[kChecks]));
         if (scene == Scene::Triangle) {
             interpolate_->set(kMvpUniform, glm::mat4(1.0f));
-            triangle_vbo_.update(
-                triangle_vertices(p.color("color_a"), p.color("color_b"), p.color("color_c")));
+            triangle_vbo_.update(triangle_vertices(p[kColorA], p[kColorB], p[kColorC]));
             glBindVertexArray(triangle_.id());
             glDrawArrays(GL_TRIANGLES, 0, 3);
         } else {
@@ -180,33 +191,32 @@ public:
     // scene=shading: the sphere's size, e.g. {"subdiv": 3, "vertices": 642,
     // "triangles": 1280}.
     nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
-        if (p.get<Scene>("scene") != Scene::Shading || sphere_subdiv_ < 0)
-            return nlohmann::json::object();
-        return {{"subdiv", sphere_subdiv_},
+        if (p[kScene] != Scene::Shading || sphere_subdiv_ < 0) return nlohmann::json::object();
+        return {{kSubdiv.name, sphere_subdiv_},
                 {"vertices", sphere_.vertex_count()},
                 {"triangles", sphere_.index_count() / 3}};
     }
 
     bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {
-        if (p.get<Scene>("scene") != Scene::Shading) return false;
+        if (p[kScene] != Scene::Shading) return false;
         // 50 pixels of drag move the light one unit, within its range.
-        p.set_clamped("light_x", p.number("light_x") + 0.02f * float(dx));
-        p.set_clamped("light_y", p.number("light_y") + 0.02f * float(dy));
+        p.set_clamped(kLightX, p[kLightX] + 0.02f * float(dx));
+        p.set_clamped(kLightY, p[kLightY] + 0.02f * float(dy));
         return true;
     }
 
 private:
     void draw_sphere(const fw::ParamValues& p, float aspect) {
-        if (p.integer("subdiv") != sphere_subdiv_) build_sphere(p.integer("subdiv"));
+        if (p[kSubdiv] != sphere_subdiv_) build_sphere(p[kSubdiv]);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         shading_->use();
         shading_->set(kViewProjectionUniform, sphere_view_projection(aspect));
         // The enum's value is the shader's SHADING_* (shared.glsl).
-        shading_->set(kShadingUniform, static_cast<int>(p.get<Shading>("shading")));
+        shading_->set(kShadingUniform, static_cast<int>(p[kShading]));
         // The light and the material matter only once the student's lighting
         // is written; until then the compiler drops them: set while active.
-        const glm::vec3 light{p.number("light_x"), p.number("light_y"), p.number("light_z")};
+        const glm::vec3 light{p[kLightX], p[kLightY], p[kLightZ]};
         shading_->set_if_active(kLightUniform, light);
         shading_->set_if_active(kEyeUniform, kSphereEye);
         shading_->set_if_active(kKaUniform, kKa);
