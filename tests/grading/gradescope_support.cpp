@@ -93,7 +93,7 @@ std::string set_up(Autograder& ag) {
     // Before any submission replaces them; the submissions are made from these.
     for (const std::string& rel : ag.student_files) ag.solution_text[rel] = read_text(source / rel);
     for (const char* script : {"setup.sh", "run_autograder"})
-        ag.scripts[script] = read_text(source / "grading" / "gradescope" / script);
+        ag.scripts[script] = read_text(source / "grading/platforms/gradescope" / script);
     // Gradescope copies run_autograder to /autograder and runs it from there.
     fs::copy_file(source / "run_autograder", ag.root / "run_autograder");
 
