@@ -39,15 +39,16 @@ struct ImageCheck {
     int radius = 1;     // 1: a 3x3 neighbourhood
     double max_fail_fraction = 0.001;
 };
+// A probe's tolerance when its check gives none: a colour's per channel, a depth's.
+constexpr double kColorTolerance = 0.01, kDepthTolerance = 1e-5;
 struct ProbeCheck {
     std::optional<std::array<int, 2>> at;  // a window pixel, origin bottom-left; else "ndc"
     std::array<double, 2> ndc{};
     std::vector<double> color;  // r, g, b(, a) in 0..1; empty for a depth probe
     double depth = 0.0;
-    double tolerance = 0.01;  // a colour's per channel; a depth probe's default is 1e-5
+    double tolerance = kColorTolerance;  // per channel; a depth probe's is kDepthTolerance
     bool reads_depth() const { return color.empty(); }
 };
-constexpr double kColorTolerance = 0.01, kDepthTolerance = 1e-5;
 struct StatCheck {
     std::string stat;  // a dotted path into the frame's stats
     std::optional<nlohmann::json> equals;

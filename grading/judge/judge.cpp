@@ -305,13 +305,14 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
         auto r = renders.find(cp.name);
         if (r != renders.end()) frame.emplace(outputs, *r->second, out_dir, lab.id);
         const std::vector<Check>& checks = lab.checks.at(k);
+        const Visibility visibility = visibility_named(cp.visibility);
         for (size_t i = 0; i < checks.size(); ++i) {
             const Check& check = checks[i];
             CheckResult result;
             result.lab = lab.id;
             result.checkpoint = cp.name;
             result.kind = check.kind;
-            result.visibility = visibility_named(cp.visibility);
+            result.visibility = visibility;
             result.max_score = check.points;
             switch (check.kind) {
                 case CheckKind::Image:
