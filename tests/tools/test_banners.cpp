@@ -111,6 +111,14 @@ std::vector<Line> split_lines(const std::vector<std::string>& text) {
             line.solution = code_of(text[i], in_comment);
         } else {
             line.released = code_of(text[i], in_comment);
+            // In the student's copy (`course release`) a STUDENT line is plain code
+            // whose TODO, and the comment lines that go on with it, name the call to
+            // write: they count as the STUDENT lines did.
+            const std::size_t todo = text[i].find("// TODO:");
+            if (todo != std::string::npos)
+                line.student = text[i].substr(todo);
+            else if (!lines.empty() && !lines.back().student.empty() && t.rfind("//", 0) == 0)
+                line.student = t;
         }
         lines.push_back(line);
     }
@@ -291,6 +299,13 @@ TEST_CASE("a banner's call must be made where a student sees it") {
                                                 "    glDrawArrays(GL_TRIANGLES, 0, 3);\n"
                                                 "    // END SOLUTION\n}\n"))
                   .empty());
+    }
+    SUBCASE("named in a TODO of the student's copy, where the STUDENT line was: no problem") {
+        CHECK(
+            check_one(lab_with("released_todo",
+                               std::string(kBanner) + draw +
+                                   "    (void)0;  // TODO: glDrawArrays(GL_TRIANGLES, 0, 3)\n}\n"))
+                .empty());
     }
     SUBCASE("only in a solution block, or only in a comment: named but not made") {
         const std::vector<Problem> problems =
