@@ -11,8 +11,11 @@
 
 namespace fw {
 
-template <class T>
-struct JsonValue;  // to(T) -> json, from(json) -> T; throws Error when malformed
+// to(T) -> json, from(json) -> T; throws Error when malformed. The second
+// parameter lets a specialisation pick a family of types (units.hpp: enums
+// with names, aggregates with named fields).
+template <class T, class = void>
+struct JsonValue;
 
 template <>
 struct JsonValue<float> {

@@ -31,15 +31,9 @@
 #include <typeinfo>
 #include <vector>
 
-namespace fw {
+#include "framework/names.hpp"  // fw::Choice: a choice's enum value and name
 
-// One value of a choice parameter: the C++ enum value and the name users type
-// (`--set scene=order`, checkpoints.json, the window's panel).
-template <class E>
-struct Choice {
-    E value;
-    const char* name;
-};
+namespace fw {
 
 // A parameter's name and the C++ type of its value: float (a number), int,
 // bool, glm::vec3 (a colour) or the enum a choice is bound to.
@@ -94,6 +88,11 @@ struct Param {
     template <class E, class Options>
     static Param choice(ParamId<E> id, const Options& options, E def) {
         return choice(std::string(id.name), options, def);
+    }
+    // A choice over the names the enum is bound to (fw::ChoicesOf, names.hpp).
+    template <class E, class = std::enable_if_t<HasChoices<E>::value>>
+    static Param choice(ParamId<E> id, E def) {
+        return choice(std::string(id.name), ChoicesOf<E>::list, def);
     }
 
     Param& range(double lo, double hi);

@@ -11,10 +11,14 @@
 //
 // Arguments arrive as a JSON array, one element per parameter, and the result
 // goes back as JSON (json_glm.hpp). Supported types: float, int, bool, vecN,
-// matN and std::vector of those as results.
+// matN, an enum bound to its names (names.hpp; in JSON, the name), and as
+// results a std::vector of those or a small aggregate whose fields are
+// named for the grader (fw::FieldsOf in names.hpp; in JSON, the fields in
+// order, as a list).
 #pragma once
 
 #include <functional>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <tuple>
@@ -23,6 +27,7 @@
 #include <vector>
 
 #include "framework/json_glm.hpp"
+#include "framework/names.hpp"
 
 namespace fw {
 
@@ -38,6 +43,41 @@ struct JsonValue<std::vector<T>> {
         std::vector<T> out;
         for (const auto& e : j) out.push_back(JsonValue<T>::from(e));
         return out;
+    }
+};
+
+// An enum bound to its names: the name in JSON.
+template <class E>
+struct JsonValue<E, std::enable_if_t<std::is_enum_v<E> && HasChoices<E>::value>> {
+    static nlohmann::json to(E v) { return choice_name(v); }
+    static E from(const nlohmann::json& j) {
+        if (j.is_string())
+            for (const Choice<E>& c : ChoicesOf<E>::list)
+                if (j.get<std::string>() == c.name) return c.value;
+        throw Error("expected one of " + choice_names<E>() + ", got " + j.dump());
+    }
+};
+
+// An aggregate with named fields: its fields in order, as a JSON list.
+template <class T>
+struct JsonValue<T, std::enable_if_t<HasFields<T>::value>> {
+    using FieldType = std::remove_reference_t<decltype(T{}.*(FieldsOf<T>::list[0].member))>;
+    static_assert(sizeof(T) == std::size(FieldsOf<T>::list) * sizeof(FieldType),
+                  "fw::FieldsOf<T> must list every field of T");
+    static nlohmann::json to(const T& v) {
+        nlohmann::json out = nlohmann::json::array();
+        for (const auto& f : FieldsOf<T>::list)
+            out.push_back(JsonValue<FieldType>::to(v.*f.member));
+        return out;
+    }
+    static T from(const nlohmann::json& j) {
+        constexpr size_t n = std::size(FieldsOf<T>::list);
+        if (!j.is_array() || j.size() != n)
+            throw Error("expected a list of " + std::to_string(n) + " values, got " + j.dump());
+        T v{};
+        size_t i = 0;
+        for (const auto& f : FieldsOf<T>::list) v.*f.member = JsonValue<FieldType>::from(j[i++]);
+        return v;
     }
 };
 

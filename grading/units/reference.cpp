@@ -54,6 +54,9 @@ json random_value(const ArgDomain& d, std::mt19937& rng) {
                                                       static_cast<int>(d.hi))(rng);
         case ArgDomain::Kind::Bool:
             return std::uniform_int_distribution<int>(0, 1)(rng) == 1;
+        case ArgDomain::Kind::Choice:
+            if (d.names.empty()) break;
+            return d.names[std::uniform_int_distribution<size_t>(0, d.names.size() - 1)(rng)];
         case ArgDomain::Kind::Vector: {
             json v = json::array();
             for (int i = 0; i < d.size; ++i) v.push_back(random_number(d.lo, d.hi, rng));
@@ -132,6 +135,13 @@ bool register_reference(std::string_view lab_dir, ReferenceUnit unit) {
         throw fw::Error("reference '" + unit.lab + "." + unit.function.name + "' takes " +
                         std::to_string(unit.function.arity) + " arguments but has " +
                         std::to_string(unit.domains.size()) + " domains");
+    for (size_t i = 0; i < unit.domains.size(); ++i)
+        if (unit.enum_arguments[i] != (unit.domains[i].kind == ArgDomain::Kind::Choice))
+            throw fw::Error("reference '" + unit.lab + "." + unit.function.name + "': argument " +
+                            std::to_string(i + 1) +
+                            (unit.enum_arguments[i] ? " is an enum and needs grading::choice<E>()"
+                                                    : " is not an enum, so grading::choice "
+                                                      "does not fit it"));
     for (const Alternative& a : unit.alternatives) {
         const ValueShape &s = a.shape, &r = unit.shape;
         if (a.function.arity != unit.function.arity || s.kind != r.kind || s.list != r.list ||

@@ -27,8 +27,9 @@
 //     product(s) in the other order (several may be given);
 //   - grading::not_normalised(&fn): fn computes it without normalising a
 //     direction the function must normalise;
-//   - grading::element_names({"S", "J", ...}): names for the elements of a
-//     list result, for the report;
+//   - grading::element_names({"a", "b", ...}): names for the elements of a
+//     std::vector result, for the report (an aggregate's fields are named
+//     by the lab's fw::FieldsOf, units.hpp);
 //   - a number: the tolerance (default 1e-4; a check may set its own).
 // These alternatives are course's code like the reference, never the lab's.
 #pragma once
@@ -47,21 +48,41 @@ namespace grading {
 
 // Where one argument's random values come from.
 struct ArgDomain {
-    enum class Kind { Scalar, Integer, Vector, UnitVector, Bool } kind = Kind::Scalar;
+    enum class Kind { Scalar, Integer, Vector, UnitVector, Bool, Choice } kind = Kind::Scalar;
     int size = 1;  // components, for vectors
     double lo = -1.0, hi = 1.0;
-    bool degrees = false;  // a scalar that is an angle in degrees
+    bool degrees = false;            // a scalar that is an angle in degrees
+    std::vector<std::string> names;  // a choice's names (an enum argument)
 };
-inline ArgDomain scalar(double lo, double hi) { return {ArgDomain::Kind::Scalar, 1, lo, hi}; }
+inline ArgDomain domain(ArgDomain::Kind kind, int size, double lo, double hi,
+                        bool degrees = false) {
+    ArgDomain d;
+    d.kind = kind;
+    d.size = size;
+    d.lo = lo;
+    d.hi = hi;
+    d.degrees = degrees;
+    return d;
+}
+inline ArgDomain scalar(double lo, double hi) { return domain(ArgDomain::Kind::Scalar, 1, lo, hi); }
 inline ArgDomain degrees(double lo, double hi) {
-    return {ArgDomain::Kind::Scalar, 1, lo, hi, true};
+    return domain(ArgDomain::Kind::Scalar, 1, lo, hi, true);
 }
 inline ArgDomain integer(int lo, int hi) {
-    return {ArgDomain::Kind::Integer, 1, double(lo), double(hi)};
+    return domain(ArgDomain::Kind::Integer, 1, double(lo), double(hi));
 }
-inline ArgDomain vec(int n, double lo, double hi) { return {ArgDomain::Kind::Vector, n, lo, hi}; }
-inline ArgDomain unit_vec(int n) { return {ArgDomain::Kind::UnitVector, n, -1.0, 1.0}; }
-inline ArgDomain boolean() { return {ArgDomain::Kind::Bool, 1, 0.0, 1.0}; }
+inline ArgDomain vec(int n, double lo, double hi) {
+    return domain(ArgDomain::Kind::Vector, n, lo, hi);
+}
+inline ArgDomain unit_vec(int n) { return domain(ArgDomain::Kind::UnitVector, n, -1.0, 1.0); }
+inline ArgDomain boolean() { return domain(ArgDomain::Kind::Bool, 1, 0.0, 1.0); }
+// Any of the names an enum argument is bound to (fw::ChoicesOf, names.hpp).
+template <class E>
+ArgDomain choice() {
+    ArgDomain d = domain(ArgDomain::Kind::Choice, 1, 0.0, 0.0);
+    for (const fw::Choice<E>& c : fw::ChoicesOf<E>::list) d.names.emplace_back(c.name);
+    return d;
+}
 
 // What a function returns, as far as printing it and recognising mistakes
 // need: a vector of `rows` numbers, a matrix of `columns` x `rows` (GLM's
@@ -73,7 +94,7 @@ struct ValueShape {
     bool list = false;
 };
 
-template <class T>
+template <class T, class = void>
 struct ShapeOf {
     static ValueShape get() { return {}; }
 };
@@ -93,6 +114,24 @@ struct ShapeOf<std::vector<T>> {
         return s;
     }
 };
+// An aggregate with named fields (fw::FieldsOf): a list of its field's shape.
+template <class T>
+struct ShapeOf<T, std::enable_if_t<fw::HasFields<T>::value>> {
+    static ValueShape get() {
+        ValueShape s = ShapeOf<typename fw::JsonValue<T>::FieldType>::get();
+        s.list = true;
+        return s;
+    }
+};
+
+// The names of a result's elements: an aggregate's field names, else none.
+template <class T>
+std::vector<std::string> element_names_of() {
+    std::vector<std::string> names;
+    if constexpr (fw::HasFields<T>::value)
+        for (const auto& f : fw::FieldsOf<T>::list) names.emplace_back(f.name);
+    return names;
+}
 
 // The usual mistakes the report recognises in a failing unit check. Their
 // names (mistake_id() in mistakes.hpp) are part of the report's text.
@@ -134,6 +173,7 @@ struct ReferenceUnit {
     std::string lab;                         // lab id, e.g. "transforms"
     fw::UnitFunction function;               // name + JSON call, as in the lab
     std::vector<ArgDomain> domains;          // one per argument
+    std::vector<bool> enum_arguments;        // which arguments are enums (need a choice())
     double tolerance = 1e-4;                 // default; a check may set its own
     ValueShape shape;                        // of the result
     std::vector<std::string> element_names;  // of a list result's elements, where known
@@ -156,7 +196,9 @@ ReferenceUnit make_reference(std::string name, R (*fn)(A...), std::vector<ArgDom
     ReferenceUnit unit;
     unit.function = fw::unit_function(std::move(name), fn);
     unit.domains = std::move(domains);
+    unit.enum_arguments = {std::is_enum_v<std::decay_t<A>>...};
     unit.shape = ShapeOf<std::decay_t<R>>::get();
+    unit.element_names = element_names_of<std::decay_t<R>>();
     (add_to_reference(unit, std::move(extra)), ...);
     return unit;
 }

@@ -10,7 +10,6 @@
 // fw::Program::set sends.
 // Student parts (marked TODO): translate, scale,
 // rotateX/Y/Z, rotate and compose in transforms_math.cpp.
-#include <array>
 #include <string>
 #include <vector>
 
@@ -63,13 +62,6 @@ std::vector<Vertex> squares() {
     return v;
 }
 
-// The `order` parameter's choices: Order's values named by kOrders.
-constexpr std::array<fw::Choice<Order>, kOrderCount> order_choices() {
-    std::array<fw::Choice<Order>, kOrderCount> choices{};
-    for (int i = 0; i < kOrderCount; ++i) choices[i] = {static_cast<Order>(i), kOrders[i]};
-    return choices;
-}
-
 // The lab's parameters, each named once.
 constexpr fw::ParamId<float> kTx{"tx"};
 constexpr fw::ParamId<float> kTy{"ty"};
@@ -79,7 +71,7 @@ constexpr fw::ParamId<float> kSy{"sy"};
 constexpr fw::ParamId<Order> kOrder{"order"};
 
 glm::mat4 model_of(const fw::ParamValues& p) {
-    return model_matrix(p[kTx], p[kTy], p[kAngle], p[kSx], p[kSy], static_cast<int>(p[kOrder]));
+    return model_matrix(p[kTx], p[kTy], p[kAngle], p[kSx], p[kSy], p[kOrder]);
 }
 
 }  // namespace
@@ -106,7 +98,7 @@ public:
                 .key('A'),
             factor(kSx, "scale S along x (negative mirrors)", 'U'),
             factor(kSy, "scale S along y (negative mirrors)", 'V'),
-            fw::Param::choice(kOrder, order_choices(), Order::Trs)
+            fw::Param::choice(kOrder, Order::Trs)
                 .help("M is the product of T, R and S in this order, left to right: trs is "
                       "M = T R S (S acts first)")
                 .key('O'),
@@ -119,7 +111,7 @@ public:
             fw::unit_function("rotateY", &rotateY),
             fw::unit_function("rotateZ", &rotateZ),
             fw::unit_function("rotate", &rotate),  // mat4 (float degrees, vec3 axis)
-            // mat4 (tx, ty, angle, sx, sy, int order): order indexes kOrders.
+            // mat4 (tx, ty, angle, sx, sy, Order order): order by its name, "srt".
             fw::unit_function("compose", &model_matrix),
         };
         return i;

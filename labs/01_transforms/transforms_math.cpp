@@ -12,8 +12,8 @@ namespace transforms {
 namespace {
 
 bool is_order(const std::string& order) {
-    for (const char* o : kOrders)
-        if (order == o) return true;
+    for (const fw::Choice<Order>& o : kOrders)
+        if (order == o.name) return true;
     return false;
 }
 
@@ -134,11 +134,8 @@ glm::mat4 compose(const std::string& order, const glm::mat4& T, const glm::mat4&
     // END SOLUTION
 }
 
-glm::mat4 model_matrix(float tx, float ty, float angle, float sx, float sy, int order) {
-    if (order < 0 || order >= kOrderCount)
-        throw fw::UsageError("model_matrix: order index " + std::to_string(order) +
-                             " is out of range; use 0..5 for trs, tsr, rts, rst, str, srt");
-    return compose(kOrders[order], translate({tx, ty, 0.0f}), rotateZ(angle),
+glm::mat4 model_matrix(float tx, float ty, float angle, float sx, float sy, Order order) {
+    return compose(fw::choice_name(order), translate({tx, ty, 0.0f}), rotateZ(angle),
                    scale({sx, sy, 1.0f}));
 }
 

@@ -9,14 +9,16 @@
 #include <glm/glm.hpp>
 #include <string>
 
+#include "framework/names.hpp"
+
 namespace transforms {
 
 // The values of the `order` parameter, in the order it lists them: the six
-// permutations of "trs". model_matrix() takes an index into this list, the
-// value of the enum Order.
-constexpr int kOrderCount = 6;
-constexpr const char* kOrders[kOrderCount] = {"trs", "tsr", "rts", "rst", "str", "srt"};
+// permutations of "trs", each named by its letters (the name compose() takes).
 enum class Order { Trs, Tsr, Rts, Rst, Str, Srt };
+constexpr fw::Choice<Order> kOrders[] = {{Order::Trs, "trs"}, {Order::Tsr, "tsr"},
+                                         {Order::Rts, "rts"}, {Order::Rst, "rst"},
+                                         {Order::Str, "str"}, {Order::Srt, "srt"}};
 
 // glm::mat4(...) takes its 16 numbers column by column; from_rows() takes them
 // row by row, as a matrix is written on paper and on the slides.
@@ -43,9 +45,15 @@ glm::mat4 rotate(float degrees, glm::vec3 axis);
 glm::mat4 compose(const std::string& order, const glm::mat4& T, const glm::mat4& R,
                   const glm::mat4& S);
 
-// The lab's model matrix M: compose(kOrders[order], translate(tx, ty, 0),
+// The lab's model matrix M: compose(the name of `order`, translate(tx, ty, 0),
 // rotateZ(angle), scale(sx, sy, 1)). The grader evaluates it as the unit
-// function "compose". Throws fw::UsageError when `order` is not in [0, 5].
-glm::mat4 model_matrix(float tx, float ty, float angle, float sx, float sy, int order);
+// function "compose", passing `order` by its name.
+glm::mat4 model_matrix(float tx, float ty, float angle, float sx, float sy, Order order);
 
 }  // namespace transforms
+
+// Order's names, for the `order` parameter and for the grader.
+template <>
+struct fw::ChoicesOf<transforms::Order> {
+    static constexpr const auto& list = transforms::kOrders;
+};

@@ -21,7 +21,7 @@ glm::mat4 rotateZ(float degrees) {
 //   R = rotateZ(hand)            the hand turns about the elbow
 //   H = J * R
 //   fingers: H * translate(1, +-0.1) * rotateZ(+-grip), at the hand's far end
-std::vector<glm::mat4> arm_matrices(float shoulder, float hand, float grip) {
+ArmMatrices arm_matrices(float shoulder, float hand, float grip) {
     // BEGIN SOLUTION
     // STUDENT: (void)shoulder, (void)hand, (void)grip;
     // STUDENT: // TODO: S, T, J = S * T, R, H = J * R and the two fingers, with

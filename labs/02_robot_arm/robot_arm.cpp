@@ -77,12 +77,8 @@ constexpr fw::ParamId<float> kHand{"hand"};
 constexpr fw::ParamId<float> kGrip{"grip"};
 
 // The joint angles of `p`, through the student's hierarchy.
-std::vector<glm::mat4> pose(const fw::ParamValues& p) {
-    std::vector<glm::mat4> m = arm_matrices(p[kShoulder], p[kHand], p[kGrip]);
-    if (m.size() != kMatrixCount)
-        throw fw::Error("arm_matrices() returned " + std::to_string(m.size()) +
-                        " matrices; it must return 5: {S, J, H, upper finger, lower finger}");
-    return m;
+ArmMatrices pose(const fw::ParamValues& p) {
+    return arm_matrices(p[kShoulder], p[kHand], p[kGrip]);
 }
 
 glm::vec2 place(const glm::mat4& m, float x, float y) {
@@ -145,25 +141,25 @@ public:
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_CULL_FACE);
         program_->use();
-        const std::vector<glm::mat4> m = pose(p);
+        const ArmMatrices m = pose(p);
         draw_part(base_, translate(-1.5f, -1.5f));
-        draw_part(arm_, m[kS]);
-        draw_part(hand_, m[kH]);
-        draw_part(finger_, m[kUpperFinger]);
-        draw_part(finger_, m[kLowerFinger]);
+        draw_part(arm_, m.S);
+        draw_part(hand_, m.H);
+        draw_part(finger_, m.upper_finger);
+        draw_part(finger_, m.lower_finger);
     }
 
     // Where the joints land in the world, to check against pencil and paper:
     // the elbow J * (0, 0), the fingers' root H * (1, 0), each finger's tip
     // F * (0.6, 0).
     nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
-        const std::vector<glm::mat4> m = pose(p);
+        const ArmMatrices m = pose(p);
         auto json = [](glm::vec2 v) { return fw::to_json_value(v); };
-        return {{"shoulder", json(place(m[kS], 0.0f, 0.0f))},
-                {"elbow", json(place(m[kJ], 0.0f, 0.0f))},
-                {"finger_root", json(place(m[kH], 1.0f, 0.0f))},
-                {"upper_tip", json(place(m[kUpperFinger], 0.6f, 0.0f))},
-                {"lower_tip", json(place(m[kLowerFinger], 0.6f, 0.0f))}};
+        return {{"shoulder", json(place(m.S, 0.0f, 0.0f))},
+                {"elbow", json(place(m.J, 0.0f, 0.0f))},
+                {"finger_root", json(place(m.H, 1.0f, 0.0f))},
+                {"upper_tip", json(place(m.upper_finger, 0.6f, 0.0f))},
+                {"lower_tip", json(place(m.lower_finger, 0.6f, 0.0f))}};
     }
 
     bool on_drag(fw::ParamValues& p, const fw::Frame&, double dx, double dy) override {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "framework/json_glm.hpp"
+#include "framework/names.hpp"
 #include "grading/judge/judge_unit.hpp"
 #include "grading/units/mistakes.hpp"
 #include "grading/units/reference.hpp"
@@ -94,13 +95,12 @@ glm::mat4 rotate_deg(float degrees, glm::vec3 axis) {
 // lab 1's compose with the factors in `order` ("trs", ...) multiplied left to
 // right, or right to left.
 glm::mat4 compose(const json& a, bool reversed, float angle_sign = 1.0f) {
-    static const char* const orders[] = {"trs", "tsr", "rts", "rst", "str", "srt"};
     const glm::mat4 T = glm::translate(kI, {num(a[0]), num(a[1]), 0.0f});
     const glm::mat4 R = rotate_deg(angle_sign * num(a[2]), {0, 0, 1});
     const glm::mat4 S = glm::scale(kI, {num(a[3]), num(a[4]), 1.0f});
     glm::mat4 M = kI;
-    for (const char* c = orders[a[5].get<int>()]; *c; ++c) {
-        const glm::mat4& F = *c == 't' ? T : *c == 'r' ? R : S;
+    for (char c : a[5].get<std::string>()) {
+        const glm::mat4& F = c == 't' ? T : c == 'r' ? R : S;
         M = reversed ? F * M : M * F;
     }
     return M;
@@ -162,6 +162,10 @@ json arm_with_reversed_j(const json& a, const json& expected) {
 
 glm::vec3 unit_direction(glm::vec3 v) { return glm::normalize(v); }
 
+enum class Side { Left, Right };
+constexpr fw::Choice<Side> kSides[] = {{Side::Left, "left"}, {Side::Right, "right"}};
+float side_sign(Side s) { return s == Side::Left ? -1.0f : 1.0f; }
+
 std::string judge(const std::string& lab, const std::string& function, double tolerance,
                   const std::vector<json>& edge, const Student& f, int random = 20,
                   bool* passed = nullptr) {
@@ -196,6 +200,11 @@ size_t count(const std::string& text, const std::string& needle) {
 }
 
 }  // namespace
+
+template <>
+struct fw::ChoicesOf<Side> {
+    static constexpr const auto& list = kSides;
+};
 
 TEST_CASE("mistake IDs are the stable names the reports print") {
     using grading::Mistake;
@@ -578,4 +587,32 @@ TEST_CASE("a reference's extras are checked when it registers") {
     CHECK(tol.shape.kind == grading::ValueShape::Kind::Vector);
     CHECK(reference("robot-arm", "arm_matrices").shape.list);
     CHECK(reference("transforms", "rotateZ").domains[0].degrees);
+    // An enum argument is drawn from its names, and only a choice fits it.
+    ReferenceUnit by_index = grading::make_reference("side", &side_sign, {grading::integer(0, 1)});
+    CHECK_THROWS_WITH_AS(grading::register_reference("98_extras", std::move(by_index)),
+                         doctest::Contains("argument 1 is an enum and needs grading::choice"),
+                         fw::Error);
+    ReferenceUnit on_a_number =
+        grading::make_reference("direction", &unit_direction, {grading::choice<Side>()});
+    CHECK_THROWS_WITH_AS(grading::register_reference("98_extras", std::move(on_a_number)),
+                         doctest::Contains("argument 1 is not an enum"), fw::Error);
+    std::mt19937 rng(5);
+    std::set<std::string> drawn;
+    for (int i = 0; i < 200; ++i)
+        drawn.insert(grading::random_arguments(reference("transforms", "compose"), rng)[5]);
+    CHECK(drawn == std::set<std::string>{"trs", "tsr", "rts", "rst", "str", "srt"});
+}
+
+TEST_CASE("an aggregate result is a list whose elements the report names by field") {
+    const ReferenceUnit& arm = reference("robot-arm", "arm_matrices");
+    CHECK(arm.element_names ==
+          std::vector<std::string>{"S", "J", "H", "upper finger", "lower finger"});
+    CHECK(arm.shape.kind == grading::ValueShape::Kind::Matrix);
+    const json args = json::array({30, -45, 20});
+    json wrong = arm.function.call(args);
+    REQUIRE(wrong.size() == 5);
+    wrong[1][3][0] = wrong[1][3][0].get<double>() + 1.0;  // J's translation x
+    const std::string text =
+        grading::unit_case_text(arm, args, false, arm.function.call(args), &wrong, "", 1e-5);
+    CHECK(text.find("J") != std::string::npos);
 }

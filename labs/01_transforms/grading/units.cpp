@@ -5,7 +5,6 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "framework/error.hpp"
 #include "grading/units/reference.hpp"
 #include "transforms_math.hpp"
 
@@ -41,26 +40,27 @@ glm::mat4 ref_rotate_unnormalised(float degrees, glm::vec3 a) {
     return glm::mat4(c * glm::mat3(1.0f) + (1.0f - c) * glm::outerProduct(a, a) + s * K);
 }
 
-// "compose" takes an index into kOrders (transforms_math.hpp: the names of
-// the lab's `order` parameter; course uses the names, not the lab's code).
+// "compose" takes the order by its name (transforms_math.hpp lists the names
+// of the lab's `order` parameter; course uses the names, not the lab's code).
 // M is the product left to right (`reversed`: right to left).
-glm::mat4 product(float tx, float ty, float angle, float sx, float sy, int order, bool reversed) {
-    if (order < 0 || order >= transforms::kOrderCount)
-        throw fw::Error("compose: order index " + std::to_string(order) + " is not in 0..5");
+glm::mat4 product(float tx, float ty, float angle, float sx, float sy, transforms::Order order,
+                  bool reversed) {
     const glm::mat4 T = ref_translate({tx, ty, 0}), R = ref_rotate_z(angle),
                     S = ref_scale({sx, sy, 1});
     glm::mat4 M = kIdentity;
-    for (const char* c = transforms::kOrders[order]; *c; ++c) {
+    for (const char* c = fw::choice_name(order); *c; ++c) {
         const glm::mat4& F = *c == 't' ? T : *c == 'r' ? R : S;
         M = reversed ? F * M : M * F;
     }
     return M;
 }
 
-glm::mat4 ref_compose(float tx, float ty, float angle, float sx, float sy, int order) {
+glm::mat4 ref_compose(float tx, float ty, float angle, float sx, float sy,
+                      transforms::Order order) {
     return product(tx, ty, angle, sx, sy, order, false);
 }
-glm::mat4 ref_compose_reversed(float tx, float ty, float angle, float sx, float sy, int order) {
+glm::mat4 ref_compose_reversed(float tx, float ty, float angle, float sx, float sy,
+                               transforms::Order order) {
     return product(tx, ty, angle, sx, sy, order, true);
 }
 
@@ -75,5 +75,6 @@ COURSE_REFERENCE(rotate, &ref_rotate, {grading::degrees(-720, 720), grading::vec
                  grading::not_normalised(&ref_rotate_unnormalised))
 COURSE_REFERENCE(compose, &ref_compose,
                  {grading::scalar(-2, 2), grading::scalar(-2, 2), grading::degrees(-360, 360),
-                  grading::scalar(-3, 3), grading::scalar(-3, 3), grading::integer(0, 5)},
+                  grading::scalar(-3, 3), grading::scalar(-3, 3),
+                  grading::choice<transforms::Order>()},
                  grading::reversed_product(&ref_compose_reversed))

@@ -135,7 +135,6 @@ TEST_CASE("transforms: compose multiplies the named matrices left to right") {
 }
 
 TEST_CASE("transforms: the unit function compose is the sheet's M for every order") {
-    const char* orders[] = {"trs", "tsr", "rts", "rst", "str", "srt"};
     std::vector<std::vector<float>> inputs = {{0, 0, 0, 1, 1},
                                               {1, 0.5f, 90, 2, 1},
                                               {0.75f, 0.25f, 90, 1.5f, 1},
@@ -148,21 +147,26 @@ TEST_CASE("transforms: the unit function compose is the sheet's M for every orde
         inputs.push_back({t(rng), t(rng), a(rng), s(rng), s(rng)});
     int failures = 0;
     for (const std::vector<float>& v : inputs)
-        for (int o = 0; o < 6; ++o)
-            failures += !same_matrix(glm_model(v[0], v[1], v[2], v[3], v[4], orders[o]),
-                                     transforms::model_matrix(v[0], v[1], v[2], v[3], v[4], o),
-                                     std::string("compose, order ") + orders[o]);
+        for (const fw::Choice<transforms::Order>& o : transforms::kOrders)
+            failures +=
+                !same_matrix(glm_model(v[0], v[1], v[2], v[3], v[4], o.name),
+                             transforms::model_matrix(v[0], v[1], v[2], v[3], v[4], o.value),
+                             std::string("compose, order ") + o.name);
     CHECK(failures == 0);
     // Through the lab's unit-function table, as the grader calls it.
     const fw::RegisteredLab& lab = fw::test::this_lab();
     for (const fw::UnitFunction& f : lab.info.functions) {
         if (f.name != "compose") continue;
-        const nlohmann::json out = f.call(nlohmann::json::array({1, 0.5, 90, 2, 1, 5}));
+        const nlohmann::json out = f.call(nlohmann::json::array({1, 0.5, 90, 2, 1, "srt"}));
         CHECK(same_matrix(glm_model(1, 0.5f, 90, 2, 1, "srt"), fw::from_json_value<glm::mat4>(out),
                           "compose via JSON"));
-        const auto bad_order = [&] { f.call(nlohmann::json::array({0, 0, 0, 1, 1, 6})); };
-        fw::test::check_mentions(fw::test::thrown<fw::UsageError>(bad_order),
-                                 {"order", "6", "0..5"});
+        // An order is passed by its name: an index, or a name not in the
+        // list, is refused with the names.
+        for (const nlohmann::json& bad : {nlohmann::json(5), nlohmann::json("rrs")}) {
+            const auto bad_order = [&] { f.call(nlohmann::json::array({0, 0, 0, 1, 1, bad})); };
+            fw::test::check_mentions(fw::test::thrown<fw::Error>(bad_order),
+                                     {bad.dump(), "trs", "srt"});
+        }
     }
 }
 

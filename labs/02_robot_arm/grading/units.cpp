@@ -7,8 +7,8 @@
 #include <cmath>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-#include <vector>
 
+#include "arm.hpp"  // ArmMatrices: the result's fields and their names
 #include "grading/units/reference.hpp"
 
 namespace {
@@ -26,11 +26,11 @@ glm::mat4 rigid(double turn, double x, double y) {
     return m;
 }
 
-// {S, J, H, upper finger, lower finger}: the arm turns by `shoulder` about
+// {S, J, H, upper finger, lower finger} (ArmMatrices): the arm turns by `shoulder` about
 // (-1.5, -1.5) and is 2 long; the hand turns by a further `hand` at the
 // elbow and is 1 long; the fingers sit 0.1 to either side of the hand's end,
 // across it, and turn by a further +grip (upper) and -grip (lower).
-std::vector<glm::mat4> ref_arm_matrices(float shoulder, float hand, float grip) {
+robot_arm::ArmMatrices ref_arm_matrices(float shoulder, float hand, float grip) {
     const double a = shoulder * kDegree;
     const double b = (double(shoulder) + double(hand)) * kDegree;
     const double elbow_x = -1.5 + 2.0 * std::cos(a), elbow_y = -1.5 + 2.0 * std::sin(a);
@@ -50,18 +50,18 @@ glm::mat4 turn(float degrees) {
 // Each matrix the product of its factors in reverse order, its parent
 // (S, J, H) right: S = move * turn, J = S * T, H = J * R, finger = H * move *
 // turn become turn * move, T * S, R * J and turn * move * H.
-std::vector<glm::mat4> ref_arm_reversed(float shoulder, float hand, float grip) {
-    const std::vector<glm::mat4> m = ref_arm_matrices(shoulder, hand, grip);
-    return {turn(shoulder) * move(-1.5f, -1.5f), move(2.0f, 0.0f) * m[0], turn(hand) * m[1],
-            turn(grip) * move(1.0f, 0.1f) * m[2], turn(-grip) * move(1.0f, -0.1f) * m[2]};
+robot_arm::ArmMatrices ref_arm_reversed(float shoulder, float hand, float grip) {
+    const robot_arm::ArmMatrices m = ref_arm_matrices(shoulder, hand, grip);
+    return {turn(shoulder) * move(-1.5f, -1.5f), move(2.0f, 0.0f) * m.S, turn(hand) * m.J,
+            turn(grip) * move(1.0f, 0.1f) * m.H, turn(-grip) * move(1.0f, -0.1f) * m.H};
 }
 
 // The fingers' own two factors swapped (H * turn * move): each finger turns
 // about the elbow, the hand's origin, instead of about its own base.
-std::vector<glm::mat4> ref_arm_fingers_reversed(float shoulder, float hand, float grip) {
-    std::vector<glm::mat4> m = ref_arm_matrices(shoulder, hand, grip);
-    m[3] = m[2] * turn(grip) * move(1.0f, 0.1f);
-    m[4] = m[2] * turn(-grip) * move(1.0f, -0.1f);
+robot_arm::ArmMatrices ref_arm_fingers_reversed(float shoulder, float hand, float grip) {
+    robot_arm::ArmMatrices m = ref_arm_matrices(shoulder, hand, grip);
+    m.upper_finger = m.H * turn(grip) * move(1.0f, 0.1f);
+    m.lower_finger = m.H * turn(-grip) * move(1.0f, -0.1f);
     return m;
 }
 
@@ -70,6 +70,5 @@ std::vector<glm::mat4> ref_arm_fingers_reversed(float shoulder, float hand, floa
 COURSE_REFERENCE(arm_matrices, &ref_arm_matrices,
                  {grading::degrees(-180, 180), grading::degrees(-150, 150),
                   grading::degrees(0, 90)},
-                 grading::element_names({"S", "J", "H", "upper finger", "lower finger"}),
                  grading::reversed_product(&ref_arm_reversed),
                  grading::reversed_product(&ref_arm_fingers_reversed))

@@ -38,6 +38,9 @@ struct Placed {
 
 cplx unit(double degrees) { return std::polar(1.0, degrees * kDegree); }
 
+// Positions in expected_pose()'s list, in ArmMatrices' field order.
+constexpr size_t kS = 0, kJ = 1, kH = 2, kUpperFinger = 3, kLowerFinger = 4;
+
 // {S, J, H, upper finger, lower finger} by walking along the arm: the elbow
 // is 2 along the arm, the hand's end 1 further along the hand, the fingers
 // 0.1 to either side of it (i * turn is the hand's +y).
@@ -61,15 +64,12 @@ glm::mat4 as_matrix(const Placed& m) {
 const char* const kMatrixNames[] = {"S", "J", "H", "upper finger", "lower finger"};
 
 // Every element within `tol`; on failure prints Expected/Observed.
-bool matrices_match(const std::vector<glm::mat4>& observed, const Pose& p, float tol = 1e-5f) {
+bool matrices_match(const robot_arm::ArmMatrices& m, const Pose& p, float tol = 1e-5f) {
     const std::vector<Placed> expected = expected_pose(p);
-    if (observed.size() != expected.size()) {
-        MESSAGE("expected 5 matrices, observed " << observed.size());
-        return false;
-    }
+    const glm::mat4 observed[] = {m.S, m.J, m.H, m.upper_finger, m.lower_finger};
     bool pass = true;
     for (size_t k = 0; k < expected.size(); ++k) {
-        const glm::mat4 e = as_matrix(expected[k]), &o = observed[k];
+        const glm::mat4 e = as_matrix(expected[k]), o = observed[k];
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r) {
                 if (std::fabs(o[c][r] - e[c][r]) <= tol * std::max(1.0f, std::fabs(e[c][r])))
@@ -102,10 +102,10 @@ double inside(const Box& b, const Placed& m, cplx w) {
 bool predict(const Pose& p, cplx w, glm::vec3& color, double margin = 0.01) {
     const std::vector<Placed> m = expected_pose(p);
     const std::pair<double, glm::vec3> top_down[] = {
-        {inside(kFinger, m[robot_arm::kLowerFinger], w), kFingerColor},
-        {inside(kFinger, m[robot_arm::kUpperFinger], w), kFingerColor},
-        {inside(kHand, m[robot_arm::kH], w), kHandColor},
-        {inside(kArm, m[robot_arm::kS], w), kArmColor},
+        {inside(kFinger, m[kLowerFinger], w), kFingerColor},
+        {inside(kFinger, m[kUpperFinger], w), kFingerColor},
+        {inside(kHand, m[kH], w), kHandColor},
+        {inside(kArm, m[kS], w), kArmColor},
         {0.3 - std::abs(w - kShoulder), kBaseColor}};
     for (const auto& [depth, c] : top_down) {
         if (std::fabs(depth) <= margin) return false;
@@ -228,7 +228,11 @@ TEST_CASE("robot-arm: arm_matrices is the closed form on 1000 random poses") {
 TEST_CASE("robot-arm: the grader's call through JSON returns the same five matrices") {
     const fw::UnitFunction& f = fw::test::this_lab().info.functions.at(0);
     const nlohmann::json result = f.call(nlohmann::json::array({30, -45, 20}));
-    CHECK(matrices_match(fw::from_json_value<std::vector<glm::mat4>>(result), kDefault));
+    CHECK(matrices_match(fw::from_json_value<robot_arm::ArmMatrices>(result), kDefault));
+    // In JSON the five matrices are a list in the fields' order.
+    REQUIRE(result.is_array());
+    CHECK(result.size() == 5);
+    CHECK(fw::from_json_value<glm::mat4>(result[kJ]) == robot_arm::arm_matrices(30, -45, 20).J);
     CHECK(!fw::test::thrown([&] { f.call(nlohmann::json::array({30, -45})); }).empty());
 }
 
@@ -245,14 +249,14 @@ TEST_CASE("robot-arm: hand, finger tips and arm show their colours at the sheet'
         const fw::Image img = lab.render(p).color;
         // The hand's centre H * (0.5, 0); each finger 0.05 inside its tip,
         // F * (0.55, 0). Both are on top of everything drawn before them.
-        CHECK(probe_part(img, p, robot_arm::kH, {0.5, 0}, kHandColor, probed));
-        CHECK(probe_part(img, p, robot_arm::kUpperFinger, {0.55, 0}, kFingerColor, probed));
-        CHECK(probe_part(img, p, robot_arm::kLowerFinger, {0.55, 0}, kFingerColor, probed));
+        CHECK(probe_part(img, p, kH, {0.5, 0}, kHandColor, probed));
+        CHECK(probe_part(img, p, kUpperFinger, {0.55, 0}, kFingerColor, probed));
+        CHECK(probe_part(img, p, kLowerFinger, {0.55, 0}, kFingerColor, probed));
         // The arm's middle S * (1, 0), where nothing drawn later covers it.
-        const Placed s = expected_pose(p)[robot_arm::kS];
+        const Placed s = expected_pose(p)[kS];
         glm::vec3 top;
         if (predict(p, s.origin + s.turn * 1.0, top) && top == kArmColor)
-            CHECK(probe_part(img, p, robot_arm::kS, {1, 0}, kArmColor, probed));
+            CHECK(probe_part(img, p, kS, {1, 0}, kArmColor, probed));
         // Background, far from the arm: the corner opposite the shoulder.
         CHECK(fw::test::probe_rgb(img, kSize - 3, kSize - 3, kBlack));
         CHECK(sweep(img, p) == 0);
@@ -282,10 +286,10 @@ TEST_CASE("robot-arm: the stats give the joints where the sheet puts them") {
     const std::vector<Placed> m = expected_pose(p);
     const std::pair<const char*, cplx> joints[] = {
         {"shoulder", kShoulder},
-        {"elbow", m[robot_arm::kJ].origin},
-        {"finger_root", m[robot_arm::kH].origin + m[robot_arm::kH].turn},
-        {"upper_tip", m[robot_arm::kUpperFinger].origin + 0.6 * m[robot_arm::kUpperFinger].turn},
-        {"lower_tip", m[robot_arm::kLowerFinger].origin + 0.6 * m[robot_arm::kLowerFinger].turn}};
+        {"elbow", m[kJ].origin},
+        {"finger_root", m[kH].origin + m[kH].turn},
+        {"upper_tip", m[kUpperFinger].origin + 0.6 * m[kUpperFinger].turn},
+        {"lower_tip", m[kLowerFinger].origin + 0.6 * m[kLowerFinger].turn}};
     for (const auto& [name, at] : joints) {
         CAPTURE(name);
         const nlohmann::json& v = stats.at("lab_stats").at(name);
