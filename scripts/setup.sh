@@ -63,7 +63,10 @@ fi
 
 preset=${LAB_PRESET:-}
 if [ -z "$preset" ]; then
-  if [ -n "${CI:-}" ]; then preset=ci; else preset=default; fi
+  # A student's repository (made by `course release`) has no test suite:
+  # build only what a student runs, `lab` and `course`.
+  if [ ! -d "$root/tests" ]; then preset=student
+  elif [ -n "${CI:-}" ]; then preset=ci; else preset=default; fi
 fi
 cd "$root"
 cmake --preset "$preset" >/dev/null

@@ -64,12 +64,26 @@ struct ReleaseSummary {
         hidden;                                    // checkpoints file -> names
     std::vector<std::string> references_left_out;  // hidden checkpoints' reference files
     std::vector<std::string> missing;              // tracked by git but absent from the tree
+    std::vector<std::string> untracked;            // not tracked by git: never released
+    std::size_t staff_only = 0;                    // staff files left out (is_staff_only)
 };
 
-// The project's files under `source`, relative: `git ls-files` (tracked and
-// untracked files git does not ignore) in a git checkout, else every file
-// outside build*/, .git/ and .cache/.
+// The project's files under `source`, relative: in a git checkout, those git
+// tracks and, apart, the untracked ones git does not ignore; elsewhere every
+// file outside build*/, .git/ and .cache/, all counted as tracked.
+struct ProjectFiles {
+    std::vector<std::string> tracked, untracked;
+};
+ProjectFiles project_file_lists(const std::string& source);
+// Both lists in one, sorted.
 std::vector<std::string> project_files(const std::string& source);
+
+// Whether the staff file `rel` stays out of the student repository: the
+// course's own tests and benchmarks, the unit checks' references
+// (labs/NN_name/grading/), CI and the staff README (the student README,
+// docs/student/README.md, takes its place).
+bool is_staff_only(const std::string& rel);
+constexpr const char* kStudentReadme = "docs/student/README.md";
 
 // A project file's whole text; throws fw::Error naming it when unreadable.
 std::string read_file(const std::filesystem::path& path);

@@ -22,9 +22,10 @@ namespace grading {
 
 namespace {
 
-// A file the release writes: its text when transformed, else copied as is.
+// A file the release writes: its text when transformed, else copied as is
+// (from `from`, the same path but for the student README).
 struct Planned {
-    std::string rel;
+    std::string rel, from;
     bool transformed = false;
     std::string text;
 };
@@ -42,6 +43,7 @@ Planned plan_file(const fs::path& root, const std::string& rel, ReleasePlan& pla
     const fs::path src = root / rel, r(rel);
     Planned p;
     p.rel = rel;
+    p.from = rel;
     if (fs::is_regular_file(fs::symlink_status(src)) && is_marked_source(rel)) {
         const std::string text = read_file(src);
         const size_t blocks = solution_blocks(text, rel).size();
@@ -64,13 +66,21 @@ Planned plan_file(const fs::path& root, const std::string& rel, ReleasePlan& pla
     return p;
 }
 
-// Pass 1: reads, transforms and checks every file; nothing is written yet.
+// Pass 1: reads, transforms and checks every tracked file a student gets;
+// nothing is written yet.
 ReleasePlan plan_release(const fs::path& root, ReleaseSummary& summary) {
     ReleasePlan plan;
     std::string errors;
-    for (const std::string& rel : project_files(root.string())) {
+    ProjectFiles lists = project_file_lists(root.string());
+    summary.untracked = std::move(lists.untracked);
+    for (const std::string& rel : lists.tracked) {
         if (!fs::exists(fs::symlink_status(root / rel))) {
             summary.missing.push_back(rel);
+            continue;
+        }
+        if (rel == kStudentReadme) plan.files.push_back({"README.md", rel, false, ""});
+        if (is_staff_only(rel)) {
+            ++summary.staff_only;
             continue;
         }
         try {
@@ -100,6 +110,19 @@ void create_parent(const fs::path& path) {
 }
 
 }  // namespace
+
+bool is_staff_only(const std::string& rel) {
+    std::vector<std::string> parts;
+    for (const fs::path& part : fs::path(rel)) parts.push_back(part.string());
+    if (parts.empty()) return false;
+    static const std::set<std::string> kStaffFolders = {"tests", "bench", ".ci"};
+    static const std::set<std::string> kStaffFiles = {
+        "README.md", "Dockerfile", ".dockerignore", "scripts/test.sh", "scripts/fresh-debian.sh",
+        kStudentReadme};
+    if (kStaffFolders.count(parts[0]) || kStaffFiles.count(rel)) return true;
+    // labs/NN_name/tests/ and labs/NN_name/grading/ (the references).
+    return parts.size() >= 4 && parts[0] == "labs" && (parts[2] == "tests" || parts[2] == "grading");
+}
 
 void require_new_output_dir(const fs::path& dir) {
     std::error_code ec;
@@ -144,47 +167,78 @@ std::string read_file(const fs::path& path) {
     return s.str();
 }
 
-std::vector<std::string> project_files(const std::string& source) {
+namespace {
+
+// `git ls-files -z ARGS` in the checkout `source`, one path per entry.
+std::vector<std::string> git_files(const std::string& source, const std::string& args) {
+    const std::string command = "git -C " + fw::shell_quote(source) + " ls-files -z " + args;
+    FILE* p = popen(command.c_str(), "r");
+    if (!p) throw fw::Error("cannot run '" + command + "': is git installed?");
+    std::string listing;
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) listing.append(buf, n);
+    const int status = pclose(p);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        throw fw::Error("'" + command + "' failed in the git checkout '" + source +
+                        "' (see git's message above); install git or fix the checkout");
     std::vector<std::string> files;
-    fs::path root(source);
+    for (size_t b = 0, e; b < listing.size(); b = e + 1) {
+        e = listing.find('\0', b);
+        if (e == std::string::npos) e = listing.size();
+        if (e > b) files.push_back(listing.substr(b, e - b));
+    }
+    return files;
+}
+
+// Every file under `root` outside build*/ (at the top), .git/ and .cache/.
+std::vector<std::string> walked_files(const fs::path& root) {
+    std::vector<std::string> files;
+    for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator();
+         ++it) {
+        const std::string name = it->path().filename().string();
+        const bool top = it.depth() == 0;
+        if (it->is_directory() &&
+            (name == ".git" || name == ".cache" || (top && name.rfind("build", 0) == 0))) {
+            it.disable_recursion_pending();
+            continue;
+        }
+        if (!it->is_directory()) files.push_back(fs::relative(it->path(), root).string());
+    }
+    return files;
+}
+
+void sort_unique(std::vector<std::string>& files) {
+    std::sort(files.begin(), files.end());
+    files.erase(std::unique(files.begin(), files.end()), files.end());
+}
+
+}  // namespace
+
+ProjectFiles project_file_lists(const std::string& source) {
+    const fs::path root(source);
     if (!fs::is_directory(root))
         throw fw::Error("source tree '" + source +
                         "' is not a directory; set LAB_ROOT to the repository");
-    // Untracked files count too: a release from a working tree holds what a
-    // build of that tree compiles (a new lab not yet committed included).
+    ProjectFiles out;
     if (fs::exists(root / ".git")) {
-        std::string command = "git -C " + fw::shell_quote(source) +
-                              " ls-files -z --cached --others --exclude-standard";
-        FILE* p = popen(command.c_str(), "r");
-        if (!p) throw fw::Error("cannot run '" + command + "': is git installed?");
-        std::string listing;
-        char buf[4096];
-        size_t n;
-        while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) listing.append(buf, n);
-        int status = pclose(p);
-        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-            throw fw::Error("'" + command + "' failed in the git checkout '" + source +
-                            "' (see git's message above); install git or fix the checkout");
-        for (size_t b = 0, e; b < listing.size(); b = e + 1) {
-            e = listing.find('\0', b);
-            if (e == std::string::npos) e = listing.size();
-            if (e > b) files.push_back(listing.substr(b, e - b));
-        }
+        out.tracked = git_files(source, "--cached");
+        out.untracked = git_files(source, "--others --exclude-standard");
     } else {
-        for (auto it = fs::recursive_directory_iterator(root);
-             it != fs::recursive_directory_iterator(); ++it) {
-            std::string name = it->path().filename().string();
-            bool top = it.depth() == 0;
-            if (it->is_directory() &&
-                (name == ".git" || name == ".cache" || (top && name.rfind("build", 0) == 0))) {
-                it.disable_recursion_pending();
-                continue;
-            }
-            if (!it->is_directory()) files.push_back(fs::relative(it->path(), root).string());
-        }
+        out.tracked = walked_files(root);
     }
-    std::sort(files.begin(), files.end());
-    files.erase(std::unique(files.begin(), files.end()), files.end());
+    sort_unique(out.tracked);
+    sort_unique(out.untracked);
+    return out;
+}
+
+std::vector<std::string> project_files(const std::string& source) {
+    // Untracked files count too: a build of a working tree compiles them (a
+    // new lab not yet committed included).
+    ProjectFiles lists = project_file_lists(source);
+    std::vector<std::string> files = std::move(lists.tracked);
+    files.insert(files.end(), lists.untracked.begin(), lists.untracked.end());
+    sort_unique(files);
     return files;
 }
 
@@ -203,7 +257,7 @@ ReleaseSummary release_tree(const std::string& source, const std::string& out) {
             summary.references_left_out.push_back(p.rel);
             continue;
         }
-        const fs::path src = root / p.rel;
+        const fs::path src = root / p.from;
         if (p.transformed && !fs::is_symlink(src))
             write_file(dest / p.rel, p.text, fs::status(src).permissions());
         else
@@ -234,6 +288,12 @@ int release_command(const std::string& out_dir) {
     for (const std::string& file : s.missing)
         std::printf("  %-48s not written: tracked by git but missing from the tree\n",
                     file.c_str());
+    for (const std::string& file : s.untracked)
+        std::printf("  %-48s not released: git does not track it (commit it to release it)\n",
+                    file.c_str());
+    std::printf("  %zu staff files left out: the course's tests, benchmarks, references and CI; "
+                "%s is the student's README.md\n",
+                s.staff_only, kStudentReadme);
     std::printf(
         "%zu files written to %s; %d solution blocks removed from %zu files; %zu hidden "
         "checkpoints and %zu reference files left out\n",
