@@ -117,11 +117,12 @@ bool is_staff_only(const std::string& rel) {
     if (parts.empty()) return false;
     static const std::set<std::string> kStaffFolders = {"tests", "bench", ".ci"};
     static const std::set<std::string> kStaffFiles = {
-        "README.md", "Dockerfile", ".dockerignore", "scripts/test.sh", "scripts/fresh-debian.sh",
+        "README.md",   "Dockerfile", ".dockerignore", "scripts/test.sh", "scripts/fresh-debian.sh",
         kStudentReadme};
     if (kStaffFolders.count(parts[0]) || kStaffFiles.count(rel)) return true;
     // labs/NN_name/tests/ and labs/NN_name/grading/ (the references).
-    return parts.size() >= 4 && parts[0] == "labs" && (parts[2] == "tests" || parts[2] == "grading");
+    return parts.size() >= 4 && parts[0] == "labs" &&
+           (parts[2] == "tests" || parts[2] == "grading");
 }
 
 void require_new_output_dir(const fs::path& dir) {
@@ -291,9 +292,10 @@ int release_command(const std::string& out_dir) {
     for (const std::string& file : s.untracked)
         std::printf("  %-48s not released: git does not track it (commit it to release it)\n",
                     file.c_str());
-    std::printf("  %zu staff files left out: the course's tests, benchmarks, references and CI; "
-                "%s is the student's README.md\n",
-                s.staff_only, kStudentReadme);
+    std::printf(
+        "  %zu staff files left out: the course's tests, benchmarks, references and CI; "
+        "%s is the student's README.md\n",
+        s.staff_only, kStudentReadme);
     std::printf(
         "%zu files written to %s; %d solution blocks removed from %zu files; %zu hidden "
         "checkpoints and %zu reference files left out\n",

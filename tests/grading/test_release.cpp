@@ -2,10 +2,12 @@
 // small tree written by release_tree(). No GL, no git: fast.
 #include <sys/stat.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "framework/text.hpp"
 #include "grading/release/release.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -226,15 +228,23 @@ TEST_CASE("release: a tree outside git: files, modes, hidden references, build f
     for (const char* name : {"a", "b", "h1", "h2"})
         write(src / "labs/00_x/reference" / (name + std::string(".png")), name);
     write(src / "README.md", "Between `// BEGIN SOLUTION` and `// END SOLUTION`.\n");
+    write(src / grading::kStudentReadme, "# The labs, for students\n");
     for (const char* skipped :
          {"build/lab.o", "build-asan/bin/lab", ".cache/clangd/x", "labs/00_x/.git/HEAD"})
         write(src / skipped, "x");
+    // The staff's own: tests, benchmarks, CI, unit-check references.
+    const char* const staff[] = {"tests/t.cpp", "bench/b.cpp", ".ci/run", "labs/00_x/tests/t.cpp",
+                                 "labs/00_x/grading/units.cpp"};
+    for (const char* file : staff) write(src / file, "int staff;\n");
 
     grading::ReleaseSummary s = grading::release_tree(src.string(), out.string());
     CHECK(s.files == 7);
+    CHECK(s.staff_only == 7);  // the five above, README.md and the student README's source
+    for (const char* file : staff) CHECK_MESSAGE(!fs::exists(out / file), file);
+    CHECK(!fs::exists(out / grading::kStudentReadme));
     check_text(read(out / "labs/00_x/x.cpp"), kStudent);
     check_text(read(out / "shaders/00_x/x.frag"), "void main() {}\n");
-    check_text(read(out / "README.md"), read(src / "README.md"));
+    check_text(read(out / "README.md"), "# The labs, for students\n");
     CHECK(fs::status(out / "scripts/run.sh").permissions() == fs::perms(0755));
     CHECK(fs::status(out / "labs/00_x/x.cpp").permissions() == fs::perms(0644));
     CHECK(grading::drop_hidden_checkpoints(kCheckpoints, "c").text ==
@@ -268,6 +278,23 @@ TEST_CASE("release: a tree outside git: files, modes, hidden references, build f
     check_mentions(
         thrown([&] { grading::release_tree((dir / "nowhere").string(), out2.string()); }),
         {(dir / "nowhere").string()});
+}
+
+TEST_CASE("release: in a git checkout, only tracked files; untracked ones are named") {
+    const fs::path dir = fs::path(fw::test::out_dir()) / "git", src = dir / "src",
+                   out = dir / "out";
+    fs::remove_all(dir);
+    write(src / "labs/00_x/x.cpp", kSolution);
+    write(src / "notes.txt", "a staff member's notes\n");
+    const std::string git = "git -C " + fw::shell_quote(src.string()) + " ";
+    REQUIRE(std::system((git + "init -q && " + git + "add labs/00_x/x.cpp").c_str()) == 0);
+    write(src / "labs/00_x/new.cpp", "int not_yet_committed;\n");
+    const grading::ReleaseSummary s = grading::release_tree(src.string(), out.string());
+    CHECK(s.files == 1);
+    CHECK(fs::exists(out / "labs/00_x/x.cpp"));
+    CHECK(!fs::exists(out / "notes.txt"));
+    CHECK(!fs::exists(out / "labs/00_x/new.cpp"));
+    CHECK(s.untracked == std::vector<std::string>{"labs/00_x/new.cpp", "notes.txt"});
 }
 
 // This repository's own markers, checked in milliseconds rather than by the

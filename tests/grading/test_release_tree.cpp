@@ -1,6 +1,7 @@
 // `course release` end to end, on this repository:
-// - the student tree holds no marker and no hidden checkpoint, builds, runs
-//   every lab without a crash, and scores below full marks;
+// - the student tree holds no marker, no hidden checkpoint and none of the
+//   staff's files (tests, references, CI), builds, runs every lab without a
+//   crash, scores below full marks, and its own self-checks fail;
 // - every solution block is graded before the deadline: with that block
 //   alone in its student version, some check of a visible checkpoint that
 //   passes with the solution fails (hidden checkpoints test the same code
@@ -87,7 +88,32 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
         CHECK(observed == expected);
     }
 
+    // The staff's own files stay out; the README is the student's.
+    for (const char* staff : {"tests", "bench", ".ci", "Dockerfile", "scripts/test.sh"})
+        CHECK_MESSAGE(!fs::exists(student / staff), staff << " was released");
+    for (const std::string& lab : lab_dirs(student)) {
+        CHECK_MESSAGE(!fs::exists(student / "labs" / lab / "tests"), lab << "'s tests released");
+        const fs::path refs = student / "labs" / lab / "grading";
+        if (fs::exists(refs))
+            for (const auto& e : fs::directory_iterator(refs))
+                CHECK_MESSAGE(e.path().extension() != ".cpp", e.path()
+                                                                  << " (a reference) released");
+    }
+    CHECK(read_text(student / "README.md") == read_text(source / grading::kStudentReadme));
+
     build_tree(student, "lab course");
+    // Its own tests: one self-check per lab, each red on the starting code.
+    const auto self = run("ctest --test-dir " + shell_quote((student / "build").string()) +
+                              " -L self-check -j " + jobs(),
+                          /*may_fail=*/true);
+    MESSAGE(self.output);
+    CHECK(self.exit_code != 0);
+    for (const std::string& lab : lab_dirs(student)) {
+        const std::string id =
+            fw::read_checkpoint_file((student / "labs" / lab / "checkpoints.json").string()).lab;
+        CHECK_MESSAGE(self.output.find(" - check." + id + " (Failed)") != std::string::npos,
+                      "the self-check of " << id << " is missing or passes on the starting code");
+    }
     const std::string bin = (student / "build" / "bin").string();
     Grade g = grade(bin + "/course", bin + "/lab", "", dir / "grade");
     MESSAGE(g.output);
