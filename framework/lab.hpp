@@ -39,6 +39,12 @@ struct LabInfo {
     std::vector<Param> params;
     std::vector<std::string> controls;    // extra window controls, e.g. "drag: orbit the eye"
     std::vector<UnitFunction> functions;  // student functions the grader evaluates (units.hpp)
+    // The width / height the scene is drawn for; 0: the lab's projection
+    // follows the frame's aspect. A fixed aspect holds in any frame (`lab
+    // render --size`, the window, `lab serve`): the lab draws into the largest
+    // centred viewport of that aspect and the rest stays black, letterboxed,
+    // never stretched.
+    double aspect = 0.0;
 };
 
 // The lab's programs, loaded from files under shaders/. The library owns them
@@ -79,6 +85,16 @@ struct Frame {
     double time = 0.0;  // seconds since the window opened; 0 offscreen
 };
 
+// Where a scene of `aspect` (LabInfo::aspect) goes in a frame of width x
+// height: the whole frame for 0, else the largest centred rectangle of that
+// aspect.
+struct Viewport {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+Viewport scene_viewport(double aspect, int width, int height);
+// `frame` as the lab sees it: the size of its scene_viewport.
+Frame scene_frame(const LabInfo& info, const Frame& frame);
+
 class Lab {
 public:
     virtual ~Lab() = default;
@@ -86,7 +102,9 @@ public:
     // context, before the first draw.
     virtual void init(ProgramLibrary& programs) = 0;
     // Draws one frame into the bound framebuffer. The runner has set the
-    // viewport to the frame and cleared colour to (0, 0, 0, 1) and depth to 1.
+    // viewport to the frame (the scene's part of it, for a lab with a fixed
+    // LabInfo::aspect: `frame` then gives that part's size) and cleared colour
+    // to (0, 0, 0, 1) and depth to 1.
     virtual void draw(const ParamValues& params, const Frame& frame) = 0;
     // Extra figures for --stats (under "lab_stats"), e.g. bytes stored, for
     // the frame just drawn with these parameters.

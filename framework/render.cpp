@@ -1,6 +1,8 @@
 #include "framework/render.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 
 #include "framework/error.hpp"
@@ -9,6 +11,21 @@
 #include "framework/gl/query.hpp"
 
 namespace fw {
+
+Viewport scene_viewport(double aspect, int width, int height) {
+    if (!(aspect > 0.0) || width <= 0 || height <= 0) return {0, 0, width, height};
+    if (double(width) > aspect * height) {
+        const int w = std::max(1, static_cast<int>(std::lround(aspect * height)));
+        return {(width - w) / 2, 0, w, height};
+    }
+    const int h = std::max(1, static_cast<int>(std::lround(width / aspect)));
+    return {0, (height - h) / 2, width, h};
+}
+
+Frame scene_frame(const LabInfo& info, const Frame& frame) {
+    const Viewport v = scene_viewport(info.aspect, frame.width, frame.height);
+    return {v.width, v.height, frame.time};
+}
 
 LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
     : registered_(lab), context_(std::move(context)), programs_(lab.info.dir), lab_(lab.create()) {
@@ -60,7 +77,9 @@ FrameResult LabRenderer::draw(const ParamValues& params, int width, int height, 
     const auto start = std::chrono::steady_clock::now();
     begin_frame(width, height);
     if (!rejected.empty()) throw UsageError("lab '" + id + "': " + rejected);
-    const Frame frame{width, height, time};
+    const Viewport v = scene_viewport(registered_.info.aspect, width, height);
+    glViewport(v.x, v.y, v.width, v.height);
+    const Frame frame{v.width, v.height, time};
     draw_queried(params, frame);
     const double render_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -107,7 +107,8 @@ void LabSession::apply_motion(const Motion& motion, const Frame& frame) {
 bool LabSession::apply_input(const Frame& frame) {
     const bool reload = std::exchange(reload_, false);
     if (reload) problems_.shader_errors = renderer_.programs().reload_all();
-    for (const Motion& motion : motions_) apply_motion(motion, frame);
+    const Frame scene = scene_frame(renderer_.registered().info, frame);
+    for (const Motion& motion : motions_) apply_motion(motion, scene);
     motions_.clear();
     return reload;
 }

@@ -122,6 +122,7 @@ public:
     static fw::LabInfo info() {
         fw::LabInfo i;
         i.title = "What the pipeline does to triangles";
+        i.aspect = 1.0;  // a square scene: letterboxed in a frame of another shape
         i.params = params();
         i.controls = {"drag: rotate the cube (yaw, pitch) in scene culling"};
         i.functions = {fw::unit_function("expand_quad", &expand_quad)};

@@ -81,6 +81,7 @@ public:
     static fw::LabInfo info() {
         fw::LabInfo i;
         i.title = "Homogeneous coordinates and composition";
+        i.aspect = 1.0;  // a square scene: letterboxed in a frame of another shape
         auto coordinate = [](fw::ParamId<float> id, const char* h, int k) {
             return fw::Param::number(id, 0).range(-2, 2).step(0.25).unit("world").help(h).key(k);
         };

@@ -92,6 +92,7 @@ public:
     static fw::LabInfo info() {
         fw::LabInfo i;
         i.title = "The hierarchy S, J = S T, H = J R";
+        i.aspect = 1.0;  // a square scene: letterboxed in a frame of another shape
         i.params = {
             fw::Param::number(kShoulder, 30)
                 .range(-180, 180)

@@ -197,3 +197,24 @@ TEST_CASE("render writes PNG, PFM and stats with every documented field") {
     CHECK(stats["params"].size() ==
           nlohmann::json::parse(run_lab("list --json").output)[0]["params"].size());
 }
+
+TEST_CASE("lab render: a square scene keeps its shape in a frame of another shape") {
+    // Lab 1's world square [-2, 2]^2 fills the centred 600x600 of an 800x600
+    // frame (x from 100): its body, [-0.5, 0.5]^2 at the identity, spans
+    // pixels 325..475 both ways. Stretched to the frame it would span x
+    // 300..500.
+    const std::string png = fw::test::out_dir() + "/letterboxed.png";
+    auto r = run_lab("render transforms --size 800x600 -o " + png);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const fw::Image img = fw::read_png(png);
+    REQUIRE(img.width == 800);
+    REQUIRE(img.height == 600);
+    const glm::vec3 red{1, 0, 0}, black{0, 0, 0};
+    CHECK(fw::test::probe_rgb(img, 327, 300, red));
+    CHECK(fw::test::probe_rgb(img, 472, 300, red));
+    CHECK(fw::test::probe_rgb(img, 400, 227, red));
+    CHECK(fw::test::probe_rgb(img, 400, 372, red));
+    CHECK(fw::test::probe_rgb(img, 322, 300, black));
+    CHECK(fw::test::probe_rgb(img, 478, 300, black));
+    CHECK(fw::test::probe_rgb(img, 305, 300, black));
+}
