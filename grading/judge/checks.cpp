@@ -2,6 +2,7 @@
 #include "grading/judge/checks.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <random>
 #include <set>
@@ -9,6 +10,8 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/units/reference.hpp"
+
+namespace fs = std::filesystem;
 
 namespace grading {
 
@@ -30,6 +33,7 @@ const std::map<CheckKind, std::set<std::string>> kFields = {
     {CheckKind::Probe, {"at", "ndc", "color", "depth", "tolerance"}},
     {CheckKind::Stat, {"stat", "equals", "min", "max", "tolerance"}},
     {CheckKind::Unit, {"function", "random", "edge", "tolerance"}},
+    {CheckKind::Forbidden, {"files", "names", "rule"}},
 };
 
 class CheckWhere {
@@ -102,15 +106,16 @@ CheckKind validated_kind(const CheckWhere& w, const json& check) {
     if (!check.is_object())
         w.fail("", "must be an object like {\"kind\": \"image\", \"points\": 1}");
     if (!check.contains("kind") || !check["kind"].is_string())
-        w.fail("kind", "is missing: it must be one of image, probe, stat, unit");
+        w.fail("kind", "is missing: it must be one of image, probe, stat, unit, forbidden");
     const std::string name = check["kind"];
     auto fields = std::find_if(kFields.begin(), kFields.end(),
                                [&](const auto& f) { return name == name_of(f.first); });
     if (fields == kFields.end())
-        w.fail("kind", "is \"" + name + "\"; it must be one of image, probe, stat, unit");
+        w.fail("kind",
+               "is \"" + name + "\"; it must be one of image, probe, stat, unit, forbidden");
     const CheckKind kind = fields->first;
     std::vector<std::string> allowed = {"kind", "points"};
-    if (kind != CheckKind::Unit) allowed.push_back("size");
+    if (kind != CheckKind::Unit && kind != CheckKind::Forbidden) allowed.push_back("size");
     allowed.insert(allowed.end(), fields->second.begin(), fields->second.end());
     for (const auto& [field, value] : check.items()) {
         (void)value;
@@ -218,6 +223,33 @@ UnitCheck parse_unit(const CheckWhere& w, const LabData& lab) {
     return c;
 }
 
+// A list of non-empty strings in `field`.
+std::vector<std::string> strings(const CheckWhere& w, const std::string& field,
+                                 const std::string& example) {
+    if (!w.has(field) || !w.get(field).is_array() || w.get(field).empty())
+        w.fail(field, "must be a non-empty list of strings, e.g. " + example);
+    std::vector<std::string> out;
+    for (const json& s : w.get(field)) {
+        if (!s.is_string() || s.get<std::string>().empty())
+            w.fail(field, "must be a non-empty list of strings, e.g. " + example);
+        out.push_back(s);
+    }
+    return out;
+}
+
+ForbiddenCheck parse_forbidden(const CheckWhere& w, const LabData& lab) {
+    ForbiddenCheck c;
+    c.files = strings(w, "files", "[\"labs/01_transforms/transforms_math.cpp\"]");
+    for (const std::string& file : c.files)
+        if (!fs::is_regular_file(fs::path(lab.root) / file))
+            w.fail("files", "names '" + file + "', which is not a file of the repository");
+    c.names = strings(w, "names", "[\"glm::translate\"]");
+    if (!w.has("rule") || !w.get("rule").is_string() || w.get("rule").get<std::string>().empty())
+        w.fail("rule", "must be the sheet's sentence that forbids these names");
+    c.rule = w.get("rule");
+    return c;
+}
+
 Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check) {
     CheckWhere w(lab, cp, index, check);
     Check c;
@@ -235,6 +267,9 @@ Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, co
             break;
         case CheckKind::Unit:
             c.spec = parse_unit(w, lab);
+            break;
+        case CheckKind::Forbidden:
+            c.spec = parse_forbidden(w, lab);
             break;
     }
     return c;

@@ -15,6 +15,10 @@
 //   unit   "function" (a reference in grading/units/), "random" (default 100)
 //          fresh argument lists, "edge": [[args...], ...], "tolerance"
 //          (default the reference's)
+//   forbidden  "files": student files (relative to the repository), "names":
+//          what they may not use (e.g. "glm::translate"), "rule": the sheet's
+//          sentence that forbids it; passes when no name occurs in their code
+//          (comments and string literals do not count)
 #pragma once
 
 #include <array>
@@ -61,15 +65,21 @@ struct UnitCheck {
     std::vector<nlohmann::json> edge;
     std::optional<double> tolerance;  // default: the reference's
 };
+struct ForbiddenCheck {
+    std::vector<std::string> files;  // relative to the repository
+    std::vector<std::string> names;  // e.g. "glm::translate", "matrix_transform"
+    std::string rule;                // the sheet's sentence
+};
+
 struct Check {
     CheckKind kind = CheckKind::Image;
     double points = 0.0;
-    std::variant<ImageCheck, ProbeCheck, StatCheck, UnitCheck> spec;
+    std::variant<ImageCheck, ProbeCheck, StatCheck, UnitCheck, ForbiddenCheck> spec;
     template <class T>
     const T& as() const {
         return std::get<T>(spec);
     }
-    bool renders() const { return kind != CheckKind::Unit; }
+    bool renders() const { return kind != CheckKind::Unit && kind != CheckKind::Forbidden; }
 };
 
 // A lab as course sees it: its folder and data file, never its code.

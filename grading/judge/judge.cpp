@@ -14,6 +14,7 @@
 #include "framework/text.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/image_words.hpp"
+#include "grading/judge/judge_source.hpp"
 #include "grading/judge/judge_unit.hpp"
 #include "grading/run/parallel.hpp"
 
@@ -323,6 +324,9 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                     break;
                 case CheckKind::Stat:
                     judge_stat(check.as<StatCheck>(), *frame, result);
+                    break;
+                case CheckKind::Forbidden:
+                    judge_forbidden(lab, check.as<ForbiddenCheck>(), result);
                     break;
                 case CheckKind::Unit:
                     for (const UnitPlan& u : plan.units)

@@ -82,7 +82,7 @@ std::string results_json(const GradeRun& run, Thumbnails& thumbnails) {
             nlohmann::ordered_json checks = nlohmann::ordered_json::array();
             for (const CheckResult* c : cp.checks)
                 checks.push_back({{"title", clean_text(c->title)},
-                                  {"kind", c->kind},
+                                  {"kind", name_of(c->kind)},
                                   {"passed", c->passed},
                                   {"score", c->score},
                                   {"max_score", c->max_score}});

@@ -16,6 +16,8 @@ const char* name_of(CheckKind kind) {
             return "stat";
         case CheckKind::Unit:
             return "unit";
+        case CheckKind::Forbidden:
+            return "forbidden";
     }
     return "?";
 }

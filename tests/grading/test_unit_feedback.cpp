@@ -4,6 +4,7 @@
 // (course_units), and must be recognised by its stable ID; correct values,
 // unrelated wrong values and cases where the mistake changes nothing must
 // name none. No child runs: judge_unit() reads a units.json built here.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <glm/glm.hpp>
@@ -16,6 +17,7 @@
 
 #include "framework/json_glm.hpp"
 #include "framework/names.hpp"
+#include "grading/judge/judge_source.hpp"
 #include "grading/judge/judge_unit.hpp"
 #include "grading/units/mistakes.hpp"
 #include "grading/units/reference.hpp"
@@ -615,4 +617,22 @@ TEST_CASE("an aggregate result is a list whose elements the report names by fiel
     const std::string text =
         grading::unit_case_text(arm, args, false, arm.function.call(args), &wrong, "", 1e-5);
     CHECK(text.find("J") != std::string::npos);
+}
+
+TEST_CASE("a forbidden name is found in code, never in comments or strings") {
+    const std::string text =
+        "// glm::translate in a comment\n"                                    // 1
+        "/* glm::translate\n   in a block */ int x = 1'000;\n"                // 2-3
+        "const char* s = \"glm::translate(\\\"\";  char c = '\"';\n"          // 4
+        "glm::mat4 a = glm::translate(M, t);\n"                               // 5
+        "glm::mat4 b = glm::translateX(M); auto c = my_glm::translate(M);\n"  // 6
+        "#include <glm/gtc/matrix_transform.hpp>\n"                           // 7
+        "glm::mat4 d = glm::translate (M, t);  // and glm::translate\n";      // 8
+    CHECK(grading::lines_using(text, "glm::translate") == std::vector<int>{5, 8});
+    CHECK(grading::lines_using(text, "matrix_transform") == std::vector<int>{7});
+    CHECK(grading::lines_using(text, "glm::rotate").empty());
+    // Line numbers survive the blanking.
+    const std::string code = grading::code_only(text);
+    CHECK(std::count(code.begin(), code.end(), '\n') == std::count(text.begin(), text.end(), '\n'));
+    CHECK(code.find("comment") == std::string::npos);
 }

@@ -1,0 +1,104 @@
+#include "grading/judge/judge_source.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "framework/text.hpp"
+
+namespace grading {
+
+namespace {
+
+bool is_name_char(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == ':';
+}
+
+// Blanks text[from, to) but its newlines.
+void blank(std::string& text, size_t from, size_t to) {
+    for (size_t i = from; i < to && i < text.size(); ++i)
+        if (text[i] != '\n') text[i] = ' ';
+}
+
+// The end of the literal that starts with the quote at `i` (past its closing
+// quote, or the end of the line where it is not closed).
+size_t literal_end(const std::string& t, size_t i) {
+    const char quote = t[i];
+    for (size_t j = i + 1; j < t.size(); ++j) {
+        if (t[j] == '\\') {
+            ++j;
+            continue;
+        }
+        if (t[j] == quote || t[j] == '\n') return j + 1;
+    }
+    return t.size();
+}
+
+}  // namespace
+
+std::string code_only(const std::string& text) {
+    std::string t = text;
+    for (size_t i = 0; i < t.size();) {
+        if (t.compare(i, 2, "//") == 0) {
+            const size_t end = t.find('\n', i);
+            blank(t, i, end == std::string::npos ? t.size() : end);
+            i = end == std::string::npos ? t.size() : end;
+        } else if (t.compare(i, 2, "/*") == 0) {
+            const size_t close = t.find("*/", i + 2);
+            const size_t end = close == std::string::npos ? t.size() : close + 2;
+            blank(t, i, end);
+            i = end;
+        } else if (t[i] == '"' ||
+                   (t[i] == '\'' &&
+                    !(i > 0 && std::isxdigit(static_cast<unsigned char>(t[i - 1]))))) {
+            // (A ' after a digit separates digits: 1'000.)
+            const size_t end = literal_end(t, i);
+            blank(t, i, end);
+            i = end;
+        } else {
+            ++i;
+        }
+    }
+    return t;
+}
+
+std::vector<int> lines_using(const std::string& text, const std::string& name) {
+    const std::string code = code_only(text);
+    std::vector<int> lines;
+    for (size_t at = code.find(name); at != std::string::npos; at = code.find(name, at + 1)) {
+        const bool starts = at == 0 || !is_name_char(code[at - 1]);
+        const size_t after = at + name.size();
+        const bool ends =
+            after >= code.size() || !is_name_char(code[after]) || !is_name_char(name.back());
+        if (!starts || !ends) continue;
+        const int line = 1 + static_cast<int>(std::count(code.begin(), code.begin() + at, '\n'));
+        if (lines.empty() || lines.back() != line) lines.push_back(line);
+    }
+    return lines;
+}
+
+void judge_forbidden(const LabData& lab, const ForbiddenCheck& check, CheckResult& result) {
+    std::string found;
+    for (const std::string& file : check.files) {
+        std::ifstream in(std::filesystem::path(lab.root) / file, std::ios::binary);
+        if (!in) {
+            found += file + ": cannot be read; check that it exists and is readable\n";
+            continue;
+        }
+        std::ostringstream text;
+        text << in.rdbuf();
+        for (const std::string& name : check.names)
+            for (int line : lines_using(text.str(), name))
+                found += file + ":" + std::to_string(line) + " uses " + name + "\n";
+    }
+    result.passed = found.empty();
+    result.score = result.passed ? result.max_score : 0.0;
+    result.output = result.passed ? "None of " + fw::join(check.names, ", ") + " in " +
+                                        fw::join(check.files, ", ") + "."
+                                  : "The sheet says: " + check.rule + "\n" + found;
+}
+
+}  // namespace grading

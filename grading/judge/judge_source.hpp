@@ -1,0 +1,28 @@
+// `forbidden` checks: what a lab's sheet forbids the student's files to use
+// (lab 1: GLM's transform helpers), found in their code by course, without
+// running anything.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grading/judge/checks.hpp"
+#include "grading/results/results.hpp"
+
+namespace grading {
+
+// `text` (C++ or GLSL) with its comments and string and character literals
+// blanked out, so that only code is searched; every newline is kept, so line
+// numbers stay the same.
+std::string code_only(const std::string& text);
+
+// The 1-based lines where `name` occurs in the code of `text` as a whole
+// name: not inside a longer identifier ("glm::translate" is found in
+// "glm::translate(M, t)", not in "glm::translateX" or "my_glm::translate").
+std::vector<int> lines_using(const std::string& text, const std::string& name);
+
+// Judges `check` on the files under lab.root: passes when none of its names
+// occurs; else the output names each file, line and name with the rule.
+void judge_forbidden(const LabData& lab, const ForbiddenCheck& check, CheckResult& result);
+
+}  // namespace grading
