@@ -8,6 +8,7 @@
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/judge/cases.hpp"
 #include "grading/units/reference.hpp"
 
 namespace grading {
@@ -190,7 +191,19 @@ StatCheck parse_stat(const CheckWhere& w) {
     return c;
 }
 
-UnitCheck parse_unit(const CheckWhere& w, const LabData& lab) {
+// A recorded reference's check takes the random cases recorded for it.
+void take_recorded(const CheckWhere& w, const LabData& lab, const RecordedChecks& recorded,
+                   const std::string& checkpoint, size_t index, UnitCheck& c) {
+    const auto found = recorded.find({checkpoint, index});
+    if (found == recorded.end() || found->second.function != c.function)
+        w.fail("function", "has no cases for this check in " + unit_cases_path(lab) +
+                               ", which course judges it from (it has no compiled reference); "
+                               "record the file again with course release");
+    c.recorded = found->second.random;
+}
+
+UnitCheck parse_unit(const CheckWhere& w, const LabData& lab, const RecordedChecks& recorded,
+                     const std::string& checkpoint, size_t index) {
     UnitCheck c;
     if (!w.has("function") || !w.get("function").is_string())
         w.fail("function", "must name a unit function, e.g. \"translate\"");
@@ -203,6 +216,7 @@ UnitCheck parse_unit(const CheckWhere& w, const LabData& lab) {
     c.function = w.get("function");
     if (w.has("random")) c.random = w.integer("random", 0, 100000);
     if (w.has("tolerance")) c.tolerance = w.number("tolerance", 0, 1);
+    if (ref->recorded) take_recorded(w, lab, recorded, checkpoint, index, c);
     if (!w.has("edge")) return c;
     if (!w.get("edge").is_array()) w.fail("edge", "must be a list of argument lists");
     for (const json& args : w.get("edge")) {
@@ -218,7 +232,8 @@ UnitCheck parse_unit(const CheckWhere& w, const LabData& lab) {
     return c;
 }
 
-Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check) {
+Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check,
+                  const RecordedChecks& recorded) {
     CheckWhere w(lab, cp, index, check);
     Check c;
     c.kind = validated_kind(w, check);
@@ -234,7 +249,7 @@ Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, co
             c.spec = parse_stat(w);
             break;
         case CheckKind::Unit:
-            c.spec = parse_unit(w, lab);
+            c.spec = parse_unit(w, lab, recorded, cp.name, index);
             break;
     }
     return c;
@@ -249,12 +264,13 @@ std::string LabData::reference(const std::string& checkpoint) const {
 std::string LabData::reference_dir() const { return root + "/labs/" + dir + "/reference"; }
 
 void parse_checks(LabData& lab) {
+    const RecordedChecks recorded = load_unit_cases(lab);
     lab.checks.assign(lab.file.checkpoints.size(), {});
     for (size_t k = 0; k < lab.file.checkpoints.size(); ++k) {
         const fw::Checkpoint& cp = lab.file.checkpoints[k];
         if (!cp.checks.is_array()) continue;  // read_checkpoint_file has checked this
         for (size_t i = 0; i < cp.checks.size(); ++i)
-            lab.checks[k].push_back(parse_check(lab, cp, i, cp.checks[i]));
+            lab.checks[k].push_back(parse_check(lab, cp, i, cp.checks[i], recorded));
     }
 }
 
@@ -296,9 +312,14 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
             // Edge cases first: their failures, shown first, are the easiest to read.
             for (const json& args : check.edge)
                 unit.cases.push_back({"u" + std::to_string(next_id++), args, true});
-            for (int n = 0; n < check.random; ++n)
-                unit.cases.push_back(
-                    {"u" + std::to_string(next_id++), random_arguments(ref, rng), false});
+            if (check.recorded) {
+                for (const json& args : *check.recorded)
+                    unit.cases.push_back({"u" + std::to_string(next_id++), args, false});
+            } else {
+                for (int n = 0; n < check.random; ++n)
+                    unit.cases.push_back(
+                        {"u" + std::to_string(next_id++), random_arguments(ref, rng), false});
+            }
             for (const UnitCase& c : unit.cases)
                 plan.job["units"].push_back(
                     {{"id", c.id}, {"function", ref.function.name}, {"args", c.args}});
