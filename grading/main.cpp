@@ -92,6 +92,17 @@ Command add_warm_cache(CLI::App& app, grading::WarmCacheOptions& w) {
     return {warm, [&w] { return grading::warm_cache_command(w); }};
 }
 
+Command add_cases(CLI::App& app, grading::CasesOptions& c) {
+    auto* cases = app.add_subcommand(
+        "cases", "Record a lab's unit cases as course release writes them (grading/cases.json)");
+    cases->add_option("LAB", c.lab, "The lab")->required();
+    cases->add_option("--out", c.out, "File to write (default labs/NN_name/grading/cases.json)");
+    cases->add_option("--seed", c.seed, "Seed of the random cases (default 1)");
+    cases->add_option("--max-random", c.max_random, "Random cases per check at most (default 50)")
+        ->check(CLI::Range(0, 100000));
+    return {cases, [&c] { return grading::cases_command(c); }};
+}
+
 Command add_release(CLI::App& app, std::string& out) {
     auto* release = app.add_subcommand("release", "Write the student version of the repository");
     release->add_option("--out", out, "Directory to write (must not exist or be empty)")
@@ -147,11 +158,13 @@ int main(int argc, char** argv) {
     grading::GradeOptions grade;
     grading::BlessOptions bless;
     grading::WarmCacheOptions warm;
+    grading::CasesOptions cases;
     std::string release_out, gradescope_out, prairielearn_out;
     grading::AutogradeOptions autograde;
     const std::vector<Command> commands = {add_grade(app, grade),
                                            add_bless(app, bless),
                                            add_warm_cache(app, warm),
+                                           add_cases(app, cases),
                                            add_release(app, release_out),
                                            add_gradescope(app, gradescope_out),
                                            add_prairielearn(app, prairielearn_out),

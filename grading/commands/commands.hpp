@@ -52,4 +52,14 @@ struct WarmCacheOptions {
 };
 int warm_cache_command(const WarmCacheOptions& options);
 
+// `course cases LAB`: records the lab's unit cases (grading/judge/cases.hpp)
+// into `out` (empty: the lab's own cases.json, in labs/NN_name/grading/).
+struct CasesOptions {
+    std::string lab;
+    std::string out;
+    unsigned seed = 1;
+    int max_random = 50;
+};
+int cases_command(const CasesOptions& options);
+
 }  // namespace grading

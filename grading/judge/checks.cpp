@@ -2,16 +2,14 @@
 #include "grading/judge/checks.hpp"
 
 #include <algorithm>
-#include <filesystem>
 #include <map>
 #include <random>
 #include <set>
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/judge/cases.hpp"
 #include "grading/units/reference.hpp"
-
-namespace fs = std::filesystem;
 
 namespace grading {
 
@@ -195,7 +193,19 @@ StatCheck parse_stat(const CheckWhere& w) {
     return c;
 }
 
-UnitCheck parse_unit(const CheckWhere& w, const LabData& lab) {
+// A recorded reference's check takes the random cases recorded for it.
+void take_recorded(const CheckWhere& w, const LabData& lab, const RecordedChecks& recorded,
+                   const std::string& checkpoint, size_t index, UnitCheck& c) {
+    const auto found = recorded.find({checkpoint, index});
+    if (found == recorded.end() || found->second.function != c.function)
+        w.fail("function", "has no cases for this check in " + unit_cases_path(lab) +
+                               ", which course judges it from (it has no compiled reference); "
+                               "record the file again with course release");
+    c.recorded = found->second.random;
+}
+
+UnitCheck parse_unit(const CheckWhere& w, const LabData& lab, const RecordedChecks& recorded,
+                     const std::string& checkpoint, size_t index) {
     UnitCheck c;
     if (!w.has("function") || !w.get("function").is_string())
         w.fail("function", "must name a unit function, e.g. \"translate\"");
@@ -208,6 +218,7 @@ UnitCheck parse_unit(const CheckWhere& w, const LabData& lab) {
     c.function = w.get("function");
     if (w.has("random")) c.random = w.integer("random", 0, 100000);
     if (w.has("tolerance")) c.tolerance = w.number("tolerance", 0, 1);
+    if (ref->recorded) take_recorded(w, lab, recorded, checkpoint, index, c);
     if (!w.has("edge")) return c;
     if (!w.get("edge").is_array()) w.fail("edge", "must be a list of argument lists");
     for (const json& args : w.get("edge")) {
@@ -237,12 +248,10 @@ std::vector<std::string> strings(const CheckWhere& w, const std::string& field,
     return out;
 }
 
-ForbiddenCheck parse_forbidden(const CheckWhere& w, const LabData& lab) {
+// The files are read when judged: a missing one fails the check, named.
+ForbiddenCheck parse_forbidden(const CheckWhere& w) {
     ForbiddenCheck c;
     c.files = strings(w, "files", "[\"labs/01_transforms/transforms_math.cpp\"]");
-    for (const std::string& file : c.files)
-        if (!fs::is_regular_file(fs::path(lab.root) / file))
-            w.fail("files", "names '" + file + "', which is not a file of the repository");
     c.names = strings(w, "names", "[\"glm::translate\"]");
     if (!w.has("rule") || !w.get("rule").is_string() || w.get("rule").get<std::string>().empty())
         w.fail("rule", "must be the sheet's sentence that forbids these names");
@@ -250,7 +259,8 @@ ForbiddenCheck parse_forbidden(const CheckWhere& w, const LabData& lab) {
     return c;
 }
 
-Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check) {
+Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check,
+                  const RecordedChecks& recorded) {
     CheckWhere w(lab, cp, index, check);
     Check c;
     c.kind = validated_kind(w, check);
@@ -266,10 +276,10 @@ Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, co
             c.spec = parse_stat(w);
             break;
         case CheckKind::Unit:
-            c.spec = parse_unit(w, lab);
+            c.spec = parse_unit(w, lab, recorded, cp.name, index);
             break;
         case CheckKind::Forbidden:
-            c.spec = parse_forbidden(w, lab);
+            c.spec = parse_forbidden(w);
             break;
     }
     return c;
@@ -284,12 +294,13 @@ std::string LabData::reference(const std::string& checkpoint) const {
 std::string LabData::reference_dir() const { return root + "/labs/" + dir + "/reference"; }
 
 void parse_checks(LabData& lab) {
+    const RecordedChecks recorded = load_unit_cases(lab);
     lab.checks.assign(lab.file.checkpoints.size(), {});
     for (size_t k = 0; k < lab.file.checkpoints.size(); ++k) {
         const fw::Checkpoint& cp = lab.file.checkpoints[k];
         if (!cp.checks.is_array()) continue;  // read_checkpoint_file has checked this
         for (size_t i = 0; i < cp.checks.size(); ++i)
-            lab.checks[k].push_back(parse_check(lab, cp, i, cp.checks[i]));
+            lab.checks[k].push_back(parse_check(lab, cp, i, cp.checks[i], recorded));
     }
 }
 
@@ -331,9 +342,14 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
             // Edge cases first: their failures, shown first, are the easiest to read.
             for (const json& args : check.edge)
                 unit.cases.push_back({"u" + std::to_string(next_id++), args, true});
-            for (int n = 0; n < check.random; ++n)
-                unit.cases.push_back(
-                    {"u" + std::to_string(next_id++), random_arguments(ref, rng), false});
+            if (check.recorded) {
+                for (const json& args : *check.recorded)
+                    unit.cases.push_back({"u" + std::to_string(next_id++), args, false});
+            } else {
+                for (int n = 0; n < check.random; ++n)
+                    unit.cases.push_back(
+                        {"u" + std::to_string(next_id++), random_arguments(ref, rng), false});
+            }
             for (const UnitCase& c : unit.cases)
                 plan.job["units"].push_back(
                     {{"id", c.id}, {"function", ref.function.name}, {"args", c.args}});

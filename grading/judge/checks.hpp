@@ -64,6 +64,10 @@ struct UnitCheck {
     int random = 100;  // fresh argument lists
     std::vector<nlohmann::json> edge;
     std::optional<double> tolerance;  // default: the reference's
+    // The random argument lists recorded in the lab's cases.json,
+    // where its reference is a recorded one (cases.hpp): the plan takes
+    // these instead of drawing `random` fresh ones.
+    std::optional<std::vector<nlohmann::json>> recorded;
 };
 struct ForbiddenCheck {
     std::vector<std::string> files;  // relative to the repository
@@ -102,8 +106,10 @@ std::vector<LabData> discover_labs(const std::string& root);
 std::vector<LabData> select_labs(const std::vector<LabData>& all,
                                  const std::vector<std::string>& names);
 
-// Parses every check of the lab into lab.checks; throws fw::UsageError
-// naming the file, the checkpoint, the check and the field.
+// Parses every check of the lab into lab.checks, after loading the lab's
+// recorded unit cases where it has them (cases.json, cases.hpp);
+// throws fw::UsageError naming the file, the checkpoint, the check and the
+// field.
 void parse_checks(LabData& lab);
 
 struct RenderPlan {

@@ -282,20 +282,30 @@ std::string shader_error_status(const ChildOutputs& outputs) {
     return text;
 }
 
+namespace {
+
+// units.json as the child wrote it, when the plan has unit cases; else (or
+// when it cannot be read) null, and why in `why`.
+json read_units(const LabPlan& plan, const ChildOutputs& outputs, std::string& why) {
+    json units;
+    if (plan.units.empty()) return units;
+    std::string bytes;
+    if (outputs.read("units.json", 16 * kMiB, bytes, why)) {
+        units = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+        if (!units.is_object()) why = "units.json is not a JSON object";
+    }
+    return units;
+}
+
+}  // namespace
+
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    const ChildOutputs& outputs, const std::string& out_dir,
                                    int threads) {
     std::map<std::string, const RenderPlan*> renders;
     for (const RenderPlan& r : plan.renders) renders[r.checkpoint] = &r;
     std::string units_why;
-    json units;
-    if (!plan.units.empty()) {
-        std::string bytes;
-        if (outputs.read("units.json", 16 * kMiB, bytes, units_why)) {
-            units = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
-            if (!units.is_object()) units_why = "units.json is not a JSON object";
-        }
-    }
+    const json units = read_units(plan, outputs, units_why);
     // Each checkpoint's frame is decoded, compared and encoded for the
     // report on its own: the checkpoints go to `threads` threads.
     const std::vector<fw::Checkpoint>& checkpoints = lab.file.checkpoints;

@@ -66,7 +66,13 @@ struct ReleaseSummary {
     std::vector<std::string> missing;              // tracked by git but absent from the tree
     std::vector<std::string> untracked;            // not tracked by git: never released
     std::size_t staff_only = 0;                    // staff files left out (is_staff_only)
+    std::vector<std::pair<std::string, std::size_t>> cases;  // cases.json written -> bytes
 };
+
+// The recorded unit cases a release writes: at most this many random cases
+// per unit check (the autograder draws fresh ones), from this seed.
+constexpr unsigned kCasesSeed = 1;
+constexpr int kCasesPerCheck = 50;
 
 // The project's files under `source`, relative: in a git checkout, those git
 // tracks and, apart, the untracked ones git does not ignore; elsewhere every

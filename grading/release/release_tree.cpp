@@ -13,6 +13,7 @@
 #include "framework/checkpoints.hpp"
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/judge/cases.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"
 
@@ -66,6 +67,23 @@ Planned plan_file(const fs::path& root, const std::string& rel, ReleasePlan& pla
     return p;
 }
 
+// The student's copy has no references (they give the solutions away): for
+// each lab with visible unit checks, their cases and course's results as
+// data: cases.json in the lab's grading/ folder (grading/judge/cases.hpp).
+void plan_unit_cases(const fs::path& root, ReleasePlan& plan, ReleaseSummary& summary) {
+    for (LabData& lab : discover_labs(root.string())) {
+        parse_checks(lab);
+        const nlohmann::json cases = record_unit_cases(lab, kCasesSeed, kCasesPerCheck);
+        if (cases.value("checks", nlohmann::json::array()).empty()) continue;
+        Planned p;
+        p.rel = "labs/" + lab.dir + "/grading/cases.json";
+        p.transformed = true;
+        p.text = cases.dump() + "\n";
+        summary.cases.push_back({p.rel, p.text.size()});
+        plan.files.push_back(std::move(p));
+    }
+}
+
 // Pass 1: reads, transforms and checks every tracked file a student gets;
 // nothing is written yet.
 ReleasePlan plan_release(const fs::path& root, ReleaseSummary& summary) {
@@ -90,6 +108,7 @@ ReleasePlan plan_release(const fs::path& root, ReleaseSummary& summary) {
         }
     }
     if (!errors.empty()) throw fw::Error("the release was not written: fix these first:" + errors);
+    plan_unit_cases(root, plan, summary);
     return plan;
 }
 
@@ -259,7 +278,9 @@ ReleaseSummary release_tree(const std::string& source, const std::string& out) {
             continue;
         }
         const fs::path src = root / p.from;
-        if (p.transformed && !fs::is_symlink(src))
+        if (p.from.empty())
+            write_file(dest / p.rel, p.text, kReadable);
+        else if (p.transformed && !fs::is_symlink(src))
             write_file(dest / p.rel, p.text, fs::status(src).permissions());
         else
             copy_entry(src, dest / p.rel);
@@ -289,6 +310,9 @@ int release_command(const std::string& out_dir) {
     for (const std::string& file : s.missing)
         std::printf("  %-48s not written: tracked by git but missing from the tree\n",
                     file.c_str());
+    for (const auto& [file, bytes] : s.cases)
+        std::printf("  %-48s written: the visible unit checks' cases (%zu bytes)\n", file.c_str(),
+                    bytes);
     for (const std::string& file : s.untracked)
         std::printf("  %-48s not released: git does not track it (commit it to release it)\n",
                     file.c_str());

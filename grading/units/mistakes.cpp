@@ -35,20 +35,6 @@ bool close(const json& observed, const json& value, double tolerance, double sla
     return observed == value;
 }
 
-// The largest difference between two values of the same structure.
-double spread(const json& a, const json& b) {
-    if (a.is_array() && b.is_array() && a.size() == b.size()) {
-        double worst = 0.0;
-        for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, spread(a[i], b[i]));
-        return worst;
-    }
-    if (a.is_number() && b.is_number()) {
-        const double d = std::fabs(a.get<double>() - b.get<double>());
-        return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
-    }
-    return a == b ? 0.0 : std::numeric_limits<double>::infinity();
-}
-
 bool same_structure(const json& a, const json& b) {
     if (a.is_array()) {
         if (!b.is_array() || a.size() != b.size()) return false;
@@ -123,9 +109,18 @@ struct Checker {
         if (!value || results_match(expected, *value, tolerance, nullptr)) return;
         if (close(observed, *value, tolerance, 0.0)) return add(m, which);
         if (factor == -1.0) return;  // negation is exact
+        const std::optional<double> step = float_step(changed, below, above);
+        if (step && matches(value, *step)) add(m, which);
+    }
+
+    // How much element k of the result changes over the float step from
+    // `below` to `above` (ReferenceUnit::float_step).
+    std::optional<double> float_step(const json& changed, const json& below, const json& above) {
+        if (ref.float_step) return ref.float_step(changed, below, above, k);
         const std::optional<json> lo = call(ref.function, below, k);
         const std::optional<json> hi = call(ref.function, above, k);
-        if (lo && hi && matches(value, spread(*lo, *hi))) add(m, which);
+        if (!lo || !hi) return std::nullopt;
+        return largest_difference(*lo, *hi);
     }
 
     void run() {
@@ -171,6 +166,20 @@ struct Checker {
 };
 
 }  // namespace
+
+double largest_difference(const json& a, const json& b) {
+    if (a.is_array() && b.is_array() && a.size() == b.size()) {
+        double worst = 0.0;
+        for (size_t i = 0; i < a.size(); ++i)
+            worst = std::max(worst, largest_difference(a[i], b[i]));
+        return worst;
+    }
+    if (a.is_number() && b.is_number()) {
+        const double d = std::fabs(a.get<double>() - b.get<double>());
+        return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
+    }
+    return a == b ? 0.0 : std::numeric_limits<double>::infinity();
+}
 
 std::string_view mistake_id(Mistake mistake) {
     switch (mistake) {

@@ -67,6 +67,10 @@ Recognised recognise_mistakes(const ReferenceUnit& ref, const std::vector<UnitFa
 // sentence saying what the result looks like and where to look.
 std::string likely_mistake(const ReferenceUnit& ref, const Explanation& explanation);
 
+// The largest difference between two values of the same structure, number
+// by number (infinite where the structures differ).
+double largest_difference(const nlohmann::json& a, const nlohmann::json& b);
+
 // Transformations of a square matrix given as GLM's columns (JSON [c][r]);
 // nullopt when `m` is not one (or, for the inverse, is singular).
 std::optional<nlohmann::json> transposed(const nlohmann::json& m);

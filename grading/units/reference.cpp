@@ -153,8 +153,11 @@ bool register_reference(std::string_view lab_dir, ReferenceUnit unit) {
     if (!unit.element_names.empty() && !unit.shape.list)
         throw fw::Error("reference '" + unit.lab + "." + unit.function.name +
                         "' names the elements of a result that is not a list");
-    std::string lab = unit.lab, name = unit.function.name;
-    registry()[lab][name] = std::move(unit);
+    ByName& lab = registry()[unit.lab];
+    const auto existing = lab.find(unit.function.name);
+    if (existing != lab.end() && unit.recorded && !existing->second.recorded) return false;
+    std::string name = unit.function.name;
+    lab[name] = std::move(unit);
     return true;
 }
 

@@ -34,7 +34,9 @@
 // These alternatives are course's code like the reference, never the lab's.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -178,6 +180,18 @@ struct ReferenceUnit {
     ValueShape shape;                        // of the result
     std::vector<std::string> element_names;  // of a list result's elements, where known
     std::vector<Alternative> alternatives;   // for recognising mistakes
+    // Built from a lab's recorded cases.json (recorded.hpp), not compiled:
+    // it knows only the argument lists recorded there.
+    bool recorded = false;
+    // Where set, how much the result (element k of a list; -1: the whole)
+    // changes over one float step of the angles mistake recognition changed
+    // to `changed` (`below` and `above`: those angles one float down and up),
+    // as the largest difference of a number; nullopt where unknown. Unset,
+    // mistake recognition calls `function` on `below` and `above`. A
+    // recorded reference holds these numbers instead of both results.
+    std::function<std::optional<double>(const nlohmann::json& changed, const nlohmann::json& below,
+                                        const nlohmann::json& above, int k)>
+        float_step;
 };
 
 inline void add_to_reference(ReferenceUnit& unit, double tolerance) { unit.tolerance = tolerance; }
@@ -204,7 +218,8 @@ ReferenceUnit make_reference(std::string name, R (*fn)(A...), std::vector<ArgDom
 }
 
 // Registers `unit` for the lab in folder `lab_dir` ("01_transforms"), which
-// fills in unit.lab. Throws fw::Error when the domains or an alternative do
+// fills in unit.lab; a recorded unit does not replace a compiled one of the
+// same name (false: not registered). Throws fw::Error when the domains or an alternative do
 // not fit the function's arguments, or element names are given for a result
 // that is not a list.
 bool register_reference(std::string_view lab_dir, ReferenceUnit unit);

@@ -1,0 +1,115 @@
+// Recorded unit cases (cases.hpp): recording a lab's unit checks into
+// cases.json, and loading the file where the references are not compiled.
+#include "grading/judge/cases.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <random>
+
+#include "framework/error.hpp"
+#include "grading/units/recorded.hpp"
+
+namespace grading {
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+constexpr int kFormat = 1;
+
+// The lab's compiled reference for `function`; recording a recorded one
+// would lose the calls it does not hold.
+const ReferenceUnit& compiled_reference(const LabData& lab, const std::string& function) {
+    const ReferenceUnit& ref = find_reference(lab.id, function);
+    if (ref.recorded)
+        throw fw::Error("course has no compiled reference for '" + function + "' of lab '" +
+                        lab.id + "' (only " + unit_cases_path(lab) +
+                        "), so it cannot record its cases");
+    return ref;
+}
+
+}  // namespace
+
+json record_unit_cases(const LabData& lab, unsigned seed, int max_random) {
+    LabData parsed = lab;
+    if (parsed.checks.size() != parsed.file.checkpoints.size()) parse_checks(parsed);
+    std::seed_seq seq{seed};
+    std::mt19937 rng(seq);
+    std::map<std::string, std::unique_ptr<ReferenceRecorder>> recorders;
+    json checks = json::array();
+    for (size_t k = 0; k < parsed.file.checkpoints.size(); ++k) {
+        const fw::Checkpoint& cp = parsed.file.checkpoints[k];
+        if (cp.visibility == "hidden") continue;  // not in the student's copy
+        for (size_t i = 0; i < parsed.checks[k].size(); ++i) {
+            if (parsed.checks[k][i].kind != CheckKind::Unit) continue;
+            const UnitCheck& check = parsed.checks[k][i].as<UnitCheck>();
+            const ReferenceUnit& ref = compiled_reference(parsed, check.function);
+            std::unique_ptr<ReferenceRecorder>& recorder = recorders[check.function];
+            if (!recorder) recorder = std::make_unique<ReferenceRecorder>(ref);
+            const double tolerance = check.tolerance.value_or(ref.tolerance);
+            json random = json::array();
+            for (int n = 0; n < std::min(check.random, max_random); ++n) {
+                json args = float_digits(random_arguments(ref, rng));
+                recorder->record(args, tolerance);
+                random.push_back(std::move(args));
+            }
+            for (const json& args : check.edge) recorder->record(args, tolerance);
+            checks.push_back({{"checkpoint", cp.name},
+                              {"check", i},
+                              {"function", check.function},
+                              {"random", std::move(random)}});
+        }
+    }
+    json functions = json::object();
+    for (const auto& [name, recorder] : recorders) functions[name] = recorder->entry();
+    return {{"format", kFormat},        {"lab", lab.id},          {"seed", seed},
+            {"max_random", max_random}, {"functions", functions}, {"checks", checks}};
+}
+
+void write_unit_cases(const std::string& path, const json& cases) {
+    const fs::path p(path);
+    if (p.has_parent_path()) fs::create_directories(p.parent_path());
+    std::ofstream out(p, std::ios::binary);
+    out << cases.dump() << '\n';
+    if (!out) throw fw::Error("cannot write " + path);
+}
+
+std::string unit_cases_path(const LabData& lab) {
+    return (fs::path(lab.root) / "labs" / lab.dir / "grading" / "cases.json").string();
+}
+
+namespace {
+
+RecordedChecks read_checks(const json& checks) {
+    RecordedChecks out;
+    for (const json& c : checks) {
+        RecordedCheck r{c.at("function").get<std::string>(),
+                        c.at("random").get<std::vector<json>>()};
+        out[{c.at("checkpoint").get<std::string>(), c.at("check").get<size_t>()}] = std::move(r);
+    }
+    return out;
+}
+
+}  // namespace
+
+RecordedChecks load_unit_cases(const LabData& lab) {
+    const std::string path = unit_cases_path(lab);
+    if (!fs::exists(path)) return {};
+    try {
+        std::ifstream in(path, std::ios::binary);
+        const json cases = json::parse(in);
+        if (cases.at("format") != kFormat)
+            throw fw::Error("it is of format " + cases.at("format").dump() + ", course reads " +
+                            std::to_string(kFormat));
+        for (const auto& [name, entry] : cases.at("functions").items())
+            register_reference(lab.dir, recorded_reference(name, entry));
+        return read_checks(cases.at("checks"));
+    } catch (const std::exception& e) {
+        throw fw::UsageError(path + ": " + e.what() +
+                             "; write it again with course release (or course cases)");
+    }
+}
+
+}  // namespace grading
