@@ -39,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/checkpoints.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -654,4 +655,35 @@ TEST_CASE("functions and files keep to the sizes of docs/conventions.md") {
     MESSAGE(functions << " functions of framework/, grading/ and the labs measured");
     CHECK(functions > 300);
     report(problems);
+}
+
+// A sheet's checkpoint table (the one whose header starts "| checkpoint |")
+// lists the lab's visible checkpoints, in the file's order: a student reads
+// there what the grader runs.
+TEST_CASE("each lab sheet's checkpoint table lists the visible checkpoints, in order") {
+    const fs::path root = fw::test::source_dir();
+    int labs = 0;
+    for (const auto& entry : fs::directory_iterator(root / "labs")) {
+        const fs::path sheet = entry.path() / "README.md", data = entry.path() / "checkpoints.json";
+        if (!fs::exists(sheet) || !fs::exists(data)) continue;
+        ++labs;
+        std::vector<std::string> expected, listed;
+        for (const fw::Checkpoint& cp : fw::read_checkpoint_file(data.string()).checkpoints)
+            if (cp.visibility == "visible") expected.push_back(cp.name);
+        std::istringstream lines(fw::test::read_text(sheet));
+        bool in_table = false;
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("| checkpoint |", 0) == 0) {
+                in_table = true;
+                continue;
+            }
+            if (!in_table) continue;
+            if (line.rfind("|-", 0) == 0) continue;
+            if (line.rfind("| `", 0) != 0) break;
+            listed.push_back(line.substr(3, line.find('`', 3) - 3));
+        }
+        INFO(sheet.string() << ": its checkpoint table against checkpoints.json's visible ones");
+        CHECK(listed == expected);
+    }
+    CHECK(labs >= 7);
 }
