@@ -71,7 +71,7 @@ if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null && unshare --mount true 2
   wrap=(unshare --mount sh -c 'mount -t tmpfs -o ro none /sys/fs/cgroup && exec setpriv --bounding-set=-sys_admin -- "$@"' sh)
   plain1=$(median_seconds --jobs 1 "$@")
   wrap=()
-  layers=$("$bin/course" grade --out "$out/r" "$@" 2>/dev/null | sed -n 's/^Sandbox: //p' |
+  layers=$("$bin/course" grade --verbose --out "$out/r" "$@" 2>/dev/null | sed -n 's/^Sandbox: //p' |
     tr ';' '\n' | sed -n 's/^ *on: \([^(]*\) (.*/\1/p' | paste -sd, -)
 fi
 floor=$("$bin/bench_floor" "$runs" | awk '/^floor_seconds/ {printf "%.2f", $2}')

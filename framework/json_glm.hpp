@@ -3,8 +3,11 @@
 // The `lab` child and `course` both read and write values this way.
 #pragma once
 
+#include <cmath>
 #include <glm/glm.hpp>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "framework/error.hpp"
@@ -17,12 +20,35 @@ namespace fw {
 template <class T, class = void>
 struct JsonValue;
 
+// JSON has no NaN or infinity (nlohmann writes them as null), so a number
+// that is not finite travels as one of the strings "NaN", "Infinity",
+// "-Infinity": a report can then say which it was.
+inline const char* non_finite_name(double v) {
+    return std::isnan(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity";
+}
+
+// A number as it travels: a JSON number, or one of the strings above;
+// nullopt for anything else.
+inline std::optional<double> json_number(const nlohmann::json& j) {
+    if (j.is_number()) return j.get<double>();
+    if (!j.is_string()) return std::nullopt;
+    const std::string& s = j.get_ref<const std::string&>();
+    if (s == "NaN") return std::numeric_limits<double>::quiet_NaN();
+    if (s == "Infinity") return std::numeric_limits<double>::infinity();
+    if (s == "-Infinity") return -std::numeric_limits<double>::infinity();
+    return std::nullopt;
+}
+
 template <>
 struct JsonValue<float> {
-    static nlohmann::json to(float v) { return v; }
+    static nlohmann::json to(float v) {
+        if (!std::isfinite(v)) return non_finite_name(v);
+        return v;
+    }
     static float from(const nlohmann::json& j) {
-        if (!j.is_number()) throw Error("expected a number, got " + j.dump());
-        return j.get<float>();
+        const std::optional<double> v = json_number(j);
+        if (!v) throw Error("expected a number, got " + j.dump());
+        return static_cast<float>(*v);
     }
 };
 
@@ -48,7 +74,7 @@ template <glm::length_t N>
 struct JsonValue<glm::vec<N, float>> {
     static nlohmann::json to(const glm::vec<N, float>& v) {
         nlohmann::json out = nlohmann::json::array();
-        for (glm::length_t i = 0; i < N; ++i) out.push_back(v[i]);
+        for (glm::length_t i = 0; i < N; ++i) out.push_back(JsonValue<float>::to(v[i]));
         return out;
     }
     static glm::vec<N, float> from(const nlohmann::json& j) {

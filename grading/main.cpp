@@ -67,6 +67,8 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     add_choice(grade, "--sandbox", g.sandbox, kSandboxes,
                "auto: every sandbox layer the machine allows; strict: refuse to grade "
                "without namespaces and cgroups (default auto)");
+    grade->add_flag("--verbose", g.verbose,
+                    "Also print the sandbox's layers (summary.txt and index.html have them)");
     grade
         ->add_option("--memory", g.memory_mib,
                      "MiB of memory per lab, where a cgroup enforces it (default 2048)")

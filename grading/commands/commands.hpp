@@ -23,6 +23,9 @@ struct GradeOptions {
     ResultsFormat format = ResultsFormat::Gradescope;
     std::string results;
     bool progress = true;  // a line per lab as it finishes
+    // --verbose: the sandbox's layers in a line after the total (summary.txt
+    // and index.html have them always).
+    bool verbose = false;
     // --shader-cache: a shader cache made by `course warm-cache`; each
     // lab's child starts from its own copy. Empty: the driver's default.
     std::string shader_cache;

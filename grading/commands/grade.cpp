@@ -215,7 +215,9 @@ int grade_command(const GradeOptions& options) {
 
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_reports(run, options.out, {options.format, options.results});
-    std::printf("%s", summary_table(run).c_str());
+    // The report's path last, where a student's eye ends.
+    std::printf("%s\nReport: %s\n", summary_table(run, options.verbose).c_str(),
+                (fs::path(options.out) / "index.html").string().c_str());
     return run.passed() ? 0 : 1;
 }
 

@@ -9,6 +9,7 @@
 #include <exception>
 #include <optional>
 
+#include "framework/json_glm.hpp"
 #include "framework/text.hpp"
 #include "grading/units/mistakes.hpp"
 
@@ -56,7 +57,8 @@ std::string call_text(const ReferenceUnit& ref, const json& args) {
 
 // A value that is neither a matrix nor a vector, or is not of its form.
 std::string other_text(const json& v, int decimals) {
-    if (v.is_number_float()) return unit_number(v.get<double>(), decimals);
+    const std::optional<double> x = fw::json_number(v);
+    if (x && (v.is_number_float() || v.is_string())) return unit_number(*x, decimals);
     return raw_text(v);
 }
 
@@ -156,10 +158,12 @@ int first_difference(const json& e, const json& o, double tolerance, std::vector
         return 0;
     }
     if (e.is_number()) {
-        if (!o.is_number()) return 2;
-        const double x = e.get<double>(), y = o.get<double>();
-        return !std::isfinite(y) || std::fabs(x - y) > tolerance * std::max(1.0, std::fabs(x)) ? 1
-                                                                                               : 0;
+        const std::optional<double> y = fw::json_number(o);
+        if (!y) return 2;
+        const double x = e.get<double>();
+        return !std::isfinite(*y) || std::fabs(x - *y) > tolerance * std::max(1.0, std::fabs(x))
+                   ? 1
+                   : 0;
     }
     return o == e ? 0 : 2;
 }
@@ -200,10 +204,29 @@ CaseOutcome evaluate(const ReferenceUnit& ref, const UnitCase& c, const json* en
     return out;
 }
 
-void verdict(CheckResult& r, bool pass, const std::string& output) {
-    r.passed = pass;
-    r.score = pass ? r.max_score : 0.0;
+// A unit check's points: in proportion to the cases passed, rounded down to
+// a tenth of a point, so that any failing case costs something.
+void verdict(CheckResult& r, size_t passed, size_t cases, const std::string& output) {
+    r.passed = cases > 0 && passed == cases;
+    r.score = r.passed ? r.max_score : unit_points(r.max_score, passed, cases);
     r.output = output;
+}
+
+// A value the child returned, as a number, with what a NaN or an infinity
+// usually means.
+std::string observed_number(const json& o) {
+    const double y = fw::json_number(o).value_or(0.0);
+    if (std::isfinite(y)) return exact(y);
+    return std::string(fw::non_finite_name(y)) + " (" + non_finite_hint(y) + ")";
+}
+
+// The first number in `v` (depth first) that is not finite; 0 when none is.
+double first_non_finite(const json& v) {
+    if (v.is_array())
+        for (const json& x : v)
+            if (const double y = first_non_finite(x); y != 0.0) return y;
+    const std::optional<double> y = fw::json_number(v);
+    return y && !std::isfinite(*y) ? *y : 0.0;
 }
 
 }  // namespace
@@ -212,6 +235,13 @@ const char* const kMatrixRowsNote =
     "Matrices are printed in rows as in the lecture (row r, column c); GLM stores them by "
     "column, m[c][r].";
 
+double unit_points(double max_score, size_t passed, size_t cases) {
+    if (cases == 0 || passed >= cases) return cases == 0 ? 0.0 : max_score;
+    const double tenths = std::floor(
+        max_score * 10.0 * static_cast<double>(passed) / static_cast<double>(cases) + 1e-9);
+    return tenths / 10.0;
+}
+
 int unit_decimals(double tolerance) {
     if (!(tolerance > 0.0) || !std::isfinite(tolerance)) return 9;
     const int d = static_cast<int>(std::ceil(-std::log10(tolerance) - 1e-9)) + 1;
@@ -219,8 +249,7 @@ int unit_decimals(double tolerance) {
 }
 
 std::string unit_number(double value, int decimals) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    if (!std::isfinite(value)) return fw::non_finite_name(value);
     if (std::fabs(value) >= 1e7) return fw::number_text(value, 7);
     return fw::trimmed_decimals(value, decimals);
 }
@@ -233,8 +262,9 @@ std::vector<std::string> matrix_rows(const json& m, int decimals) {
     for (size_t c = 0; c < columns; ++c) {
         if (!m[c].is_array() || m[c].size() != rows) return {};
         for (size_t r = 0; r < rows; ++r) {
-            if (!m[c][r].is_number()) return {};
-            cells[r][c] = unit_number(m[c][r].get<double>(), decimals);
+            const std::optional<double> x = fw::json_number(m[c][r]);
+            if (!x) return {};
+            cells[r][c] = unit_number(*x, decimals);
             width[c] = std::max(width[c], cells[r][c].size());
         }
     }
@@ -251,10 +281,10 @@ std::vector<std::string> matrix_rows(const json& m, int decimals) {
 std::string vector_text(const json& v, int decimals) {
     if (!v.is_array() || v.empty()) return "";
     for (const json& x : v)
-        if (!x.is_number()) return "";
+        if (!fw::json_number(x)) return "";
     return "(" +
            fw::join(v, ", ",
-                    [&](const json& x) { return unit_number(x.get<double>(), decimals); }) +
+                    [&](const json& x) { return unit_number(*fw::json_number(x), decimals); }) +
            ")";
 }
 
@@ -286,7 +316,7 @@ std::string unit_difference(const ReferenceUnit& ref, const json& expected, cons
         for (; at < path.size(); ++at) where.push_back("[" + std::to_string(path[at]) + "]");
     }
     return fw::join(where, ", ") + (where.empty() ? "" : ": ") + "expected " +
-           exact(e->get<double>()) + ", got " + exact(o->get<double>());
+           exact(e->get<double>()) + ", got " + observed_number(*o);
 }
 
 std::string unit_case_text(const ReferenceUnit& ref, const json& args, bool edge,
@@ -314,10 +344,12 @@ void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan
         " repeats these cases): " + std::to_string(plan.cases.size() - edges) + " random and " +
         std::to_string(edges) + " edge cases; tolerance " + tolerance_text(tol) +
         " (relative where |expected| > 1)\nExpected: every case equal to course's reference\n";
-    if (!units) return verdict(r, false, head + "Observed: no results: " + units_why);
+    if (!units)
+        return verdict(r, 0, plan.cases.size(), head + "Observed: no results: " + units_why);
     size_t passed = 0;
     std::string shown;
     int shown_count = 0;
+    double non_finite = 0.0;            // the first NaN or infinity returned, else 0
     std::vector<UnitFailure> failures;  // those with a result, for recognising mistakes
     for (const UnitCase& c : plan.cases) {
         const json* entry = units->contains(c.id) ? &(*units)[c.id] : nullptr;
@@ -326,9 +358,11 @@ void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan
             ++passed;
             continue;
         }
-        if (shown_count++ < kShownCases)
-            shown += unit_case_text(ref, c.args, c.edge, outcome.expected, outcome.observed,
-                                    outcome.why, tol);
+        const std::string text = unit_case_text(ref, c.args, c.edge, outcome.expected,
+                                                outcome.observed, outcome.why, tol);
+        if (shown_count++ == 0) r.first_case = text;
+        if (shown_count <= kShownCases) shown += text;
+        if (outcome.observed && non_finite == 0.0) non_finite = first_non_finite(*outcome.observed);
         if (outcome.observed && failures.size() < kMistakeCases)
             failures.push_back({c.args, std::move(outcome.expected), *outcome.observed});
     }
@@ -336,13 +370,21 @@ void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan
                       std::to_string(plan.cases.size()) + " cases passed";
     if (!shown.empty()) {
         const Recognised recognised = recognise_mistakes(ref, failures, tol);
-        for (const Explanation& e : recognised.mistakes) out += "\n" + likely_mistake(ref, e);
-        if (recognised.coincide) out += std::string("\n") + kSameValuesNote;
+        std::vector<std::string> diagnosis;
+        for (const Explanation& e : recognised.mistakes)
+            diagnosis.push_back(likely_mistake(ref, e));
+        if (recognised.coincide) diagnosis.push_back(kSameValuesNote);
+        if (non_finite != 0.0)
+            diagnosis.push_back("Your function returned " +
+                                std::string(fw::non_finite_name(non_finite)) + ": " +
+                                non_finite_hint(non_finite));
+        r.diagnosis = fw::join(diagnosis, "\n");
+        if (!diagnosis.empty()) out += "\n" + r.diagnosis;
         out += "\nFirst failures:\n";
         if (ref.shape.kind == ValueShape::Kind::Matrix) out += std::string(kMatrixRowsNote) + "\n";
         out += shown;
     }
-    verdict(r, passed == plan.cases.size(), out);
+    verdict(r, passed, plan.cases.size(), out);
 }
 
 }  // namespace grading

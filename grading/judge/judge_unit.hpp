@@ -21,13 +21,19 @@ namespace grading {
 void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan, unsigned seed,
                 const nlohmann::json* units, const std::string& units_why, CheckResult& r);
 
+// A unit check's points when `passed` of `cases` cases passed: `max_score`
+// in proportion, rounded down to a tenth of a point (1008 of 1009 cases of
+// 4 points give 3.9); all of them only when every case passed.
+double unit_points(double max_score, size_t passed, size_t cases);
+
 // The line a unit check's report prints once above matrices.
 extern const char* const kMatrixRowsNote;
 
 // How many decimals show a difference of `tolerance`: 5 for 1e-4, 6 for 1e-5.
 int unit_decimals(double tolerance);
 // A number with at most `decimals` decimals, trailing zeros dropped: "0.5",
-// "-1", "0.70711", "0" for a -0.000001 rounded away; "nan", "inf" as such.
+// "-1", "0.70711", "0" for a -0.000001 rounded away; "NaN", "Infinity",
+// "-Infinity" as such.
 std::string unit_number(double value, int decimals);
 // A matrix given as GLM's columns (JSON [c][r]) as its rows, one string
 // each, every column right-aligned: {"[ 1  0  2.5 ]", ...}. Empty when `m`

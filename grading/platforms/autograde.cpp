@@ -308,6 +308,9 @@ private:
             command.push_back(lab);
             shown += " " + lab;
         }
+        // The log keeps the sandbox's layers (bench/bench_gradescope.sh reads them).
+        command.push_back("--verbose");
+        shown += " --verbose";
         std::printf("%s%s\n", layout_.prefix.c_str(), shown.c_str());
         const fs::path log = fs::path(work_->path()) / "grade.log";
         const int status = run_logged(command, log, true);

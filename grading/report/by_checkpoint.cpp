@@ -26,7 +26,7 @@ std::vector<CheckpointResult> by_checkpoint(const LabResult& lab) {
         }
         CheckpointResult& cp = *found;
         cp.checks.push_back(&c);
-        cp.score += c.score;
+        cp.score = rounded_points(cp.score + c.score);
         cp.max_score += c.max_score;
         cp.passed = cp.passed && c.passed;
         // A hidden check makes its checkpoint hidden (they share one in practice).

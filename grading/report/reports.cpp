@@ -258,34 +258,76 @@ std::string lab_table(const GradeRun& run) {
     return table;
 }
 
-std::string summary_table(const GradeRun& run) {
-    using report::ascii;
-    using report::points;
-    std::string table = lab_table(run);
+namespace report {
+namespace {
+
+// `text`'s lines, each after `prefix`, as plain ASCII.
+std::string indented(const std::string& text, const std::string& prefix) {
+    std::string out;
+    std::istringstream in(ascii(text));
+    for (std::string line; std::getline(in, line);)
+        out += line.empty() ? "\n" : prefix + line + "\n";
+    return out;
+}
+
+// A line per failed check (where, what, its points, why in a line), then
+// what most likely went wrong and, for a unit check, its first failing case.
+std::string failed_checks(const GradeRun& run) {
     std::string failed;
-    size_t passed = 0;
     for (const LabResult& lab : run.labs) {
-        passed += report::passed_count(lab);
         for (const CheckResult& c : lab.checks) {
             if (c.passed) continue;
             // The Observed line says what went wrong; the Expected line only
             // repeats the check.
             const std::string why = check_failure(lab, c);
-            failed += "  " +
-                      ascii(lab.lab + "/" + c.checkpoint + ": " + c.title +
-                            (why.empty() ? "" : " - " + why)) +
-                      "\n";
+            failed +=
+                "  " +
+                ascii(lab.lab + "/" + c.checkpoint + ": " + c.title + " (" + points(c.score) + "/" +
+                      points(c.max_score) + " points)" + (why.empty() ? "" : " - " + why)) +
+                "\n";
+            failed += indented(c.diagnosis, "    ") + indented(c.first_case, "  ");
         }
     }
-    if (!failed.empty()) table += "\nFailed checks:\n" + failed;
+    return failed.empty() ? "" : "\nFailed checks:\n" + failed;
+}
 
+// What the total means: the points of hidden checkpoints in it (a
+// student's copy has none, so there it says nothing of them), and, when a
+// check failed, how a starting copy scores.
+std::string score_meaning(const GradeRun& run) {
+    double hidden = 0.0;
+    for (const LabResult& lab : run.labs)
+        for (const CheckResult& c : lab.checks)
+            if (c.visibility == Visibility::Hidden) hidden += c.max_score;
+    std::string text;
+    if (hidden > 0)
+        text += points(rounded_points(hidden)) + " of these points are in hidden checkpoints: " +
+                "a student's copy leaves them out, and they are graded on submission.\n";
+    if (!run.passed())
+        text +=
+            "A check's points come when it passes; a unit check gives points in proportion "
+            "to the cases it passes (to 0.1 point). A lab's starting copy scores low until "
+            "its TODO parts are written.\n";
+    return text;
+}
+
+}  // namespace
+}  // namespace report
+
+std::string summary_table(const GradeRun& run, bool sandbox) {
+    using report::ascii;
+    using report::points;
+    size_t passed = 0;
+    for (const LabResult& lab : run.labs) passed += report::passed_count(lab);
+    std::string table = lab_table(run) + report::failed_checks(run);
     const size_t labs = run.labs.size();
     table += "\nTotal: " + points(run.score()) + "/" + points(run.max_score()) + " points, " +
              std::to_string(passed) + " of " + std::to_string(report::check_count(run)) +
              " checks passed, " + std::to_string(labs) + (labs == 1 ? " lab, " : " labs, ") +
              report::fixed(run.seconds, 1) + " s" +
              (run.backend.empty() ? "" : ", backend " + ascii(run.backend)) + "\n";
-    if (!run.sandbox.empty())
+    table += report::score_meaning(run);
+    if (sandbox && !run.sandbox.empty())
         table += "Sandbox: " + ascii(report::sandbox_line(run.sandbox)) + "\n";
     return table;
 }

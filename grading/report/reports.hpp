@@ -17,8 +17,12 @@ struct ResultsFile {
     std::string path;  // empty: results.json in the output directory
 };
 
-// The score table: one line per lab with its score, status and failed checks.
-std::string summary_table(const GradeRun& run);
+// The score table: one line per lab with its score and status; every failed
+// check with why in a line, what most likely went wrong and, for a unit
+// check, its first failing case; the total and what it means; and, with
+// `sandbox`, the sandbox's layers in a line (summary.txt has them always,
+// the terminal with `course grade --verbose`).
+std::string summary_table(const GradeRun& run, bool sandbox = true);
 
 // The first part of that table: a header and one line per lab (score, checks
 // passed, status, seconds), without the failed checks or the total.

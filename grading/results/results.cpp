@@ -1,6 +1,7 @@
 #include "grading/results/results.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "framework/error.hpp"
 
@@ -43,10 +44,12 @@ const std::string& LabStatus::text() const {
     return ok() ? kOk : why_;
 }
 
+double rounded_points(double sum) { return std::round(sum * 1e6) / 1e6; }
+
 double LabResult::score() const {
     double s = 0.0;
     for (const CheckResult& c : checks) s += c.score;
-    return s;
+    return rounded_points(s);
 }
 
 double LabResult::max_score() const {
@@ -64,7 +67,7 @@ bool LabResult::passed() const {
 double GradeRun::score() const {
     double s = 0.0;
     for (const LabResult& l : labs) s += l.score();
-    return s;
+    return rounded_points(s);
 }
 
 double GradeRun::max_score() const {

@@ -32,6 +32,11 @@ struct CheckResult {
     // Expected / observed, thresholds and measured figures, or why the check
     // could not run (the child crashed, timed out, wrote no image...).
     std::string output;
+    // For the terminal (`course grade`'s failed checks), both also in
+    // `output`: what most likely went wrong, a sentence a line (a unit
+    // check's named mistakes, a NaN it returned), and a unit check's first
+    // failing case as the report lays it out. Empty where there is none.
+    std::string diagnosis, first_case;
     // Images for the HTML report, relative to the output directory; empty
     // where the check has none.
     std::string rendered, expected, difference;
@@ -51,6 +56,10 @@ public:
 private:
     std::string why_;
 };
+
+// A sum of points without the float residue of adding tenths (3.9 + 2 is
+// 5.9, not 5.8999999999999995): rounded to a millionth.
+double rounded_points(double sum);
 
 struct LabResult {
     std::string lab;

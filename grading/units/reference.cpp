@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "framework/error.hpp"
+#include "framework/json_glm.hpp"
 #include "framework/lab.hpp"
 #include "framework/text.hpp"
 
@@ -87,8 +89,11 @@ json random_value(const ArgDomain& d, std::mt19937& rng) {
 std::string number_text(const json& j) {
     std::ostringstream s;
     s.precision(9);
-    if (j.is_number())
-        s << j.get<double>();
+    const std::optional<double> v = fw::json_number(j);
+    if (v && !std::isfinite(*v))
+        s << fw::non_finite_name(*v);
+    else if (v)
+        s << *v;
     else
         s << j.dump();
     return s.str();
@@ -116,10 +121,14 @@ bool match(const json& e, const json& o, double tolerance, const std::string& wh
         return true;
     }
     if (e.is_number()) {
-        if (!o.is_number()) return fail("expected a number, got " + o.dump());
-        const double x = e.get<double>(), y = o.get<double>();
-        if (!std::isfinite(y) || std::fabs(x - y) > tolerance * std::max(1.0, std::fabs(x)))
-            return fail("expected " + number_text(e) + ", got " + number_text(o));
+        const std::optional<double> y = fw::json_number(o);
+        if (!y) return fail("expected a number, got " + o.dump());
+        const double x = e.get<double>();
+        if (!std::isfinite(*y) || std::fabs(x - *y) > tolerance * std::max(1.0, std::fabs(x))) {
+            const std::string hint = non_finite_hint(*y);
+            return fail("expected " + number_text(e) + ", got " + number_text(o) +
+                        (hint.empty() ? "" : " (" + hint + ")"));
+        }
         return true;
     }
     if (o != e) return fail("expected " + e.dump() + ", got " + o.dump());
@@ -127,6 +136,12 @@ bool match(const json& e, const json& o, double tolerance, const std::string& wh
 }
 
 }  // namespace
+
+std::string non_finite_hint(double value) {
+    if (std::isnan(value)) return "a division by a zero length?";
+    if (std::isinf(value)) return "a division by zero?";
+    return {};
+}
 
 bool register_reference(std::string_view lab_dir, ReferenceUnit unit) {
     int number = 0;

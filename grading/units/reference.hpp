@@ -232,6 +232,12 @@ const ReferenceUnit& find_reference(std::string_view lab, std::string_view funct
 // One random argument list for `unit` (a JSON array, one element per argument).
 nlohmann::json random_arguments(const ReferenceUnit& unit, std::mt19937& rng);
 
+// What a value that is not finite usually means, in words: "a division by a
+// zero length?" for NaN, "a division by zero?" for an infinity; empty for a
+// finite value. A number that is not finite comes from the child as the string
+// "NaN", "Infinity" or "-Infinity" (framework/json_glm.hpp).
+std::string non_finite_hint(double value);
+
 // Compares two results number by number (nested arrays of numbers, or
 // bools); true when every number is within tolerance * max(1, |expected|).
 // `why` gets the first difference, e.g. "[2][1]: expected 0.5, got 0.4999".

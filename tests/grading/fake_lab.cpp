@@ -13,6 +13,8 @@
 //   liar        black frames, stats and units.json claiming a perfect score
 //   symlink     each NAME.pam a link to course's reference (FAKE_LAB_REFERENCES)
 //   wrong_unit  the real lab's outputs, with every unit result changed
+//   transposed_unit  the real lab's outputs, with every 4x4 matrix result
+//               transposed (a symmetric one still passes)
 //   snoop       tries to read FAKE_LAB_SNOOP_READ and write into
 //               FAKE_LAB_SNOOP_WRITE, prints what happened, exits 3
 //   cache       writes into FAKE_LAB_REPORT where its Mesa shader cache is
@@ -202,6 +204,16 @@ bool nudge(json& j) {
     return false;
 }
 
+// A 4x4 matrix (four columns of four) transposed in place; other values stay.
+void transpose(json& j) {
+    if (!j.is_array() || j.size() != 4) return;
+    for (const json& column : j)
+        if (!column.is_array() || column.size() != 4) return;
+    const json m = j;
+    for (size_t c = 0; c < 4; ++c)
+        for (size_t r = 0; r < 4; ++r) j[c][r] = m[r][c];
+}
+
 void snoop(const std::string& read_path, const std::string& write_dir) {
     int fd = open(read_path.c_str(), O_RDONLY);
     std::printf("snoop: read %s: %s\n", read_path.c_str(),
@@ -303,6 +315,14 @@ int main(int argc, char** argv) {
         json results = json::parse(results_in, nullptr, false);
         for (auto& [id, entry] : results.items())
             if (entry.contains("result")) nudge(entry["result"]);
+        write_text(out + "/units.json", results.dump());
+        return rc;
+    } else if (mode == "transposed_unit") {
+        const int rc = run_real(argv);
+        std::ifstream results_in(out + "/units.json");
+        json results = json::parse(results_in, nullptr, false);
+        for (auto& [id, entry] : results.items())
+            if (entry.contains("result")) transpose(entry["result"]);
         write_text(out + "/units.json", results.dump());
         return rc;
     } else if (mode == "cache") {

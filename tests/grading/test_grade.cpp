@@ -194,6 +194,37 @@ TEST_CASE("course grade: a unit check fails when the child returns wrong results
         {"seed", "0 of 102 cases passed", "expand_quad(", "expected", "observed", "[edge case]"});
 }
 
+TEST_CASE(
+    "course grade in the terminal: each failed check's likely mistake and first case, the "
+    "report's path last, the sandbox only with --verbose") {
+    const std::string out = fw::test::out_dir() + "/report";
+    Graded g = grade("FAKE_LAB_TARGET=transforms FAKE_LAB_MODE=transposed_unit",
+                     "transforms --lab " + fake_lab(), out);
+    CHECK(g.exit_code == 1);
+    fw::test::check_mentions(g.output, {"Failed checks:", "unit translate (",
+                                        "    Likely mistake (transpose): your matrix is the "
+                                        "transpose of the expected one",
+                                        "expected (rows):", "observed (rows):",
+                                        "first difference: ", "TODO parts are written"});
+    // The summary.txt the run wrote holds the same, and the sandbox's line.
+    const std::string summary = fw::test::read_text(out + "/summary.txt");
+    CHECK(summary.find("Likely mistake (transpose)") != std::string::npos);
+    CHECK(summary.find("\nSandbox: ") != std::string::npos);
+    CHECK(g.output.find("Sandbox: ") == std::string::npos);
+    const std::string last = "\nReport: " + out + "/index.html\n";
+    REQUIRE(g.output.size() > last.size());
+    CHECK(g.output.substr(g.output.size() - last.size()) == last);
+    // A transposed scale is still right: those checks keep their points.
+    REQUIRE(g.results.is_object());
+    CHECK(g.results["score"].get<double>() > 0);
+    CHECK(g.results["score"].get<double>() < g.results["max_score"].get<double>());
+
+    Graded verbose = grade("FAKE_LAB_TARGET=transforms FAKE_LAB_MODE=transposed_unit",
+                           "transforms --verbose --lab " + fake_lab(), out);
+    CHECK(verbose.output.find("\nSandbox: ") != std::string::npos);
+    CHECK(verbose.output.find("\nSandbox: ") < verbose.output.find("\nReport: "));
+}
+
 TEST_CASE("course bless writes the references that course grade then accepts, on every backend") {
     // Blessing follows grade's backend rule: auto is EGL first, so the
     // references come from EGL and OSMesa (where this build has it) must

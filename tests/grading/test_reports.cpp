@@ -16,6 +16,7 @@
 #include "framework/image.hpp"
 #include "grading/judge/image_words.hpp"
 #include "grading/report/by_checkpoint.hpp"
+#include "grading/report/prairielearn_results.hpp"
 #include "grading/report/report_text.hpp"
 #include "grading/report/reports.hpp"
 #include "tests/grading/report_fixture.hpp"
@@ -378,11 +379,13 @@ TEST_CASE("summary.txt has an aligned row per lab, the failed checks and the tot
     CHECK(header.size() == row0.size());
     CHECK(header.size() == row1.size());
 
-    CHECK(text.find("00_pipeline/triangle: probe (8, 8) colour - Expected (1, 0, 0) < observed") !=
-          std::string::npos);
-    CHECK(text.find("01_transforms/rotate: primitives_generated == 2 - lab 01_transforms: " +
+    CHECK(text.find("00_pipeline/triangle: probe (8, 8) colour (0/2 points) - Expected (1, 0, 0) "
+                    "< observed") != std::string::npos);
+    CHECK(text.find("01_transforms/rotate: primitives_generated == 2 (0/2 points) - lab "
+                    "01_transforms: " +
                     kCrash) != std::string::npos);
-    CHECK(text.find("image vs reference - the lab wrote no image") != std::string::npos);
+    CHECK(text.find("image vs reference (0/5 points) - the lab wrote no image") !=
+          std::string::npos);
     CHECK(text.find("Total: 7/16 points, 2 of 5 checks passed, 2 labs, 1.8 s") !=
           std::string::npos);
 }
@@ -451,4 +454,52 @@ TEST_CASE("base64 gives RFC 4648's test vectors, padding included") {
     std::string all;
     for (int i = 0; i < 256; ++i) all += static_cast<char>(i);
     CHECK(base64_decode(grading::base64(all)) == all);
+}
+
+TEST_CASE(
+    "the summary of a failed unit check: partial points, its likely mistake and first case, what "
+    "the score means; the sandbox's line only where asked") {
+    const std::string dir = fw::test::out_dir() + "/partial";
+    std::filesystem::remove_all(dir);
+    LabResult lab;
+    lab.lab = "01_transforms";
+    CheckResult unit = check("01_transforms", "trs", "unit", "unit compose (1009 cases)", 3.9, 4,
+                             false, "Expected: every case\nObserved: 1008 of 1009 cases passed");
+    unit.diagnosis =
+        "Likely mistake (transpose): your matrix is the transpose of the expected one.";
+    unit.first_case = "  compose(1, 2) [edge case]\n    expected: 1\n    observed: 2\n";
+    lab.checks.push_back(unit);
+    lab.checks.push_back(
+        check("01_transforms", "trs", "probe", "probe (1, 1) colour", 2, 2, true, "ok"));
+    lab.checks.push_back(check("01_transforms", "secret", "probe", "probe (2, 2) colour", 0, 3,
+                               false, "Observed: (0, 0, 0)", "hidden"));
+    GradeRun run;
+    run.labs = {lab};
+    run.sandbox = {{"seccomp filter", true, "in every lab child", true}};
+    grading::write_reports(run, dir);
+
+    const std::string terminal = grading::summary_table(run, false);
+    INFO(terminal);
+    CHECK(terminal.find("01_transforms/trs: unit compose (1009 cases) (3.9/4 points) - Observed: "
+                        "1008 of 1009 cases passed\n"
+                        "    Likely mistake (transpose): your matrix is the transpose of the "
+                        "expected one.\n"
+                        "    compose(1, 2) [edge case]\n"
+                        "      expected: 1\n") != std::string::npos);
+    CHECK(terminal.find("Total: 5.9/9 points, 1 of 3 checks passed") != std::string::npos);
+    CHECK(terminal.find("3 of these points are in hidden checkpoints") != std::string::npos);
+    CHECK(terminal.find("starting copy scores low until its TODO parts are written") !=
+          std::string::npos);
+    CHECK(terminal.find("Sandbox:") == std::string::npos);
+    CHECK(grading::summary_table(run).find("\nSandbox: on: seccomp filter") != std::string::npos);
+    CHECK(read_text(dir + "/summary.txt") == grading::summary_table(run));
+
+    // Fractional scores reach Gradescope's and PrairieLearn's results as numbers.
+    const auto gradescope = nlohmann::json::parse(read_text(dir + "/results.json"));
+    CHECK(gradescope.at("score").get<double>() == doctest::Approx(5.9));
+    CHECK(gradescope.at("score").dump() == "5.9");
+    CHECK(gradescope.at("tests").at(0).at("score").get<double>() == doctest::Approx(5.9));
+    const auto pl = nlohmann::json::parse(grading::prairielearn_results_json(run, dir));
+    CHECK(pl.at("score").get<double>() == doctest::Approx(5.9 / 9));
+    CHECK(pl.at("tests").at(0).at("points").get<double>() == doctest::Approx(5.9));
 }

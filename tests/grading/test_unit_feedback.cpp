@@ -9,6 +9,7 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <set>
@@ -170,7 +171,7 @@ float side_sign(Side s) { return s == Side::Left ? -1.0f : 1.0f; }
 
 std::string judge(const std::string& lab, const std::string& function, double tolerance,
                   const std::vector<json>& edge, const Student& f, int random = 20,
-                  bool* passed = nullptr) {
+                  bool* passed = nullptr, grading::CheckResult* result = nullptr) {
     const ReferenceUnit& ref = reference(lab.c_str(), function.c_str());
     grading::UnitPlan plan{"cp", 0, {}};
     for (const json& args : edge)
@@ -185,12 +186,13 @@ std::string judge(const std::string& lab, const std::string& function, double to
     grading::LabData data;
     data.id = lab;
     grading::CheckResult r;
-    r.max_score = 1;
+    r.max_score = 4;
     grading::UnitCheck check;
     check.function = function;
     check.tolerance = tolerance;
     grading::judge_unit(data, check, plan, 42, &units, "", r);
     if (passed) *passed = r.passed;
+    if (result) *result = r;
     return r.output;
 }
 
@@ -635,4 +637,73 @@ TEST_CASE("a forbidden name is found in code, never in comments or strings") {
     const std::string code = grading::code_only(text);
     CHECK(std::count(code.begin(), code.end(), '\n') == std::count(text.begin(), text.end(), '\n'));
     CHECK(code.find("comment") == std::string::npos);
+}
+
+TEST_CASE("a unit check's points are proportional to its cases passed, rounded down to 0.1") {
+    CHECK(grading::unit_points(4, 1008, 1009) == doctest::Approx(3.9));
+    CHECK(grading::unit_points(4, 1009, 1009) == 4);
+    CHECK(grading::unit_points(4, 0, 1009) == 0);
+    CHECK(grading::unit_points(1, 1, 2) == doctest::Approx(0.5));
+    CHECK(grading::unit_points(2, 3, 1006) == 0);  // 0.006 points: not a tenth
+    CHECK(grading::unit_points(2.5, 999, 1000) == doctest::Approx(2.4));
+
+    // One wrong case of 1009 (the edge case) costs a tenth, not the whole check.
+    const json edge = json::array({json::array({1, -2, 3})});
+    grading::CheckResult r;
+    bool passed = true;
+    const std::string out = judge(
+        "transforms", "translate", 1e-5, {edge},
+        [&](const json& args, const json& e) {
+            return args == edge ? js(glm::transpose(mat(e))) : e;
+        },
+        1008, &passed, &r);
+    CHECK_FALSE(passed);
+    CHECK_FALSE(r.passed);
+    CHECK(r.score == doctest::Approx(3.9));
+    CHECK(r.max_score == 4);
+    CHECK(out.find("Observed: 1008 of 1009 cases passed") != std::string::npos);
+    // What the terminal prints: the mistake named, and the first case in rows.
+    CHECK(r.diagnosis.rfind("Likely mistake (transpose): ", 0) == 0);
+    CHECK(r.first_case.rfind("  translate(vec3(1, -2, 3)) [edge case]\n", 0) == 0);
+    CHECK(r.first_case.find("expected (rows):") != std::string::npos);
+}
+
+TEST_CASE("NaN and infinity travel as such and are printed with what they usually mean") {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    // The child's encoding: strings, not null; read back as the same values.
+    CHECK(fw::to_json_value(nan) == json("NaN"));
+    CHECK(fw::to_json_value(inf) == json("Infinity"));
+    CHECK(fw::to_json_value(-inf) == json("-Infinity"));
+    CHECK(fw::to_json_value(glm::vec3(1, nan, 2)).dump() == "[1.0,\"NaN\",2.0]");
+    CHECK(std::isnan(fw::from_json_value<float>(json("NaN"))));
+    CHECK(fw::from_json_value<glm::vec2>(json::array({"-Infinity", 1}))[0] == -inf);
+    CHECK(fw::to_json_value(glm::mat4(nan)).dump().find("null") == std::string::npos);
+    CHECK(grading::unit_number(nan, 5) == "NaN");
+    CHECK(grading::unit_number(-inf, 5) == "-Infinity");
+
+    std::string why;
+    CHECK_FALSE(grading::results_match(json(0.5), json("NaN"), 1e-5, &why));
+    CHECK(why == "expected 0.5, got NaN (a division by a zero length?)");
+    CHECK_FALSE(grading::results_match(json(0.5), json("Infinity"), 1e-5, &why));
+    CHECK(why == "expected 0.5, got Infinity (a division by zero?)");
+
+    // A function that divides by a zero length: every entry NaN (as the child
+    // writes it, through json_glm.hpp), the report says so and never "null".
+    grading::CheckResult r;
+    const std::string out = judge(
+        "transforms", "translate", 1e-5, {json::array({json::array({1, -2, 3})})},
+        [&](const json&, const json& e) { return js(mat(e) * nan); }, 5, nullptr, &r);
+    MESSAGE(out);
+    CHECK(out.find("null") == std::string::npos);
+    CHECK(out.find("[ NaN  NaN  NaN  NaN ]") != std::string::npos);
+    CHECK(out.find("got NaN (a division by a zero length?)") != std::string::npos);
+    CHECK(r.diagnosis.find("Your function returned NaN: a division by a zero length?") !=
+          std::string::npos);
+    CHECK(r.score == 0);
+
+    const std::string infinite = judge(
+        "transforms", "translate", 1e-5, {json::array({json::array({1, -2, 3})})},
+        [&](const json&, const json& e) { return js(mat(e) * inf); }, 5, nullptr, &r);
+    CHECK(infinite.find("Infinity (a division by zero?)") != std::string::npos);
 }
