@@ -214,7 +214,7 @@ int grade_command(const GradeOptions& options) {
     });
 
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_reports(run, options.out, {options.format, options.results});
+    write_reports(run, options.out, {options.format, options.results, options.hidden_as});
     std::printf("%s", summary_table(run).c_str());
     return run.passed() ? 0 : 1;
 }
