@@ -30,6 +30,13 @@ using Choices = std::initializer_list<std::pair<const char*, E>>;
 const Choices<grading::ResultsFormat> kPlatforms = {
     {"gradescope", grading::ResultsFormat::Gradescope},
     {"prairielearn", grading::ResultsFormat::PrairieLearn}};
+const Choices<grading::HiddenAs> kHiddenAs = {
+    {"after_due_date", grading::HiddenAs::AfterDueDate},
+    {"after_published", grading::HiddenAs::AfterPublished},
+    {"hidden", grading::HiddenAs::Hidden}};
+const char* const kHiddenAsHelp =
+    "How Gradescope shows a hidden checkpoint's test: after_due_date, after_published or "
+    "hidden (never; Gradescope then hides the student's total too) (default after_due_date)";
 const Choices<grading::GradeOptions::Sandbox> kSandboxes = {
     {"auto", grading::GradeOptions::Sandbox::Auto},
     {"strict", grading::GradeOptions::Sandbox::Strict}};
@@ -62,6 +69,7 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     add_choice(grade, "--format", g.format, kPlatforms,
                "What results.json holds (default gradescope)");
     grade->add_option("--results", g.results, "Write results.json here (default: into --out)");
+    add_choice(grade, "--hidden-as", g.hidden_as, kHiddenAs, kHiddenAsHelp);
     grade->add_option("--shader-cache", g.shader_cache,
                       "Start each lab from a copy of this shader cache (course warm-cache)");
     add_choice(grade, "--sandbox", g.sandbox, kSandboxes,
@@ -112,10 +120,11 @@ Command add_release(CLI::App& app, std::string& out) {
     return {release, [&out] { return grading::release_command(out); }};
 }
 
-Command add_gradescope(CLI::App& app, std::string& out) {
+Command add_gradescope(CLI::App& app, std::string& out, grading::HiddenAs& hidden_as) {
     auto* gradescope = app.add_subcommand("gradescope", "Write a Gradescope autograder folder");
     gradescope->add_option("--out", out, "Directory to write")->required();
-    return {gradescope, [&out] { return grading::gradescope_command(out); }};
+    add_choice(gradescope, "--hidden-as", hidden_as, kHiddenAs, kHiddenAsHelp);
+    return {gradescope, [&out, &hidden_as] { return grading::gradescope_command(out, hidden_as); }};
 }
 
 Command add_prairielearn(CLI::App& app, std::string& out) {
@@ -145,6 +154,7 @@ Command add_autograde(CLI::App& app, grading::AutogradeOptions& a) {
                           "prairielearn: the checkpoints and references course grades with");
     autograde->add_option("--user", a.user, "Build and run the submission as this user (student)");
     autograde->add_option("--timeout", a.timeout, "Seconds per lab, for course grade (60)");
+    add_choice(autograde, "--hidden-as", a.hidden_as, kHiddenAs, kHiddenAsHelp);
     return {autograde, [&a] { return grading::autograde_command(a); }};
 }
 
@@ -163,14 +173,16 @@ int main(int argc, char** argv) {
     grading::CasesOptions cases;
     std::string release_out, gradescope_out, prairielearn_out;
     grading::AutogradeOptions autograde;
-    const std::vector<Command> commands = {add_grade(app, grade),
-                                           add_bless(app, bless),
-                                           add_warm_cache(app, warm),
-                                           add_cases(app, cases),
-                                           add_release(app, release_out),
-                                           add_gradescope(app, gradescope_out),
-                                           add_prairielearn(app, prairielearn_out),
-                                           add_autograde(app, autograde)};
+    grading::HiddenAs gradescope_hidden_as = grading::HiddenAs::AfterDueDate;
+    const std::vector<Command> commands = {
+        add_grade(app, grade),
+        add_bless(app, bless),
+        add_warm_cache(app, warm),
+        add_cases(app, cases),
+        add_release(app, release_out),
+        add_gradescope(app, gradescope_out, gradescope_hidden_as),
+        add_prairielearn(app, prairielearn_out),
+        add_autograde(app, autograde)};
 
     // Every error of course, the set-up's included, exits with 2.
     const auto usage = [](const fw::Error&) { return 2; };

@@ -32,7 +32,7 @@ packages=(
 # tests that look at the reports as a student sees them, and a compiler
 # cache, which the tests that build copies of the repository share.
 if [ "${LAB_SETUP_TESTS:-0}" = 1 ]; then
-  packages+=(chromium ccache)
+  packages+=(chromium python3-html5lib ccache)
 fi
 
 missing=()

@@ -22,6 +22,9 @@ struct GradeOptions {
     // where it goes (empty: into `out`).
     ResultsFormat format = ResultsFormat::Gradescope;
     std::string results;
+    // --hidden-as: the visibility of a hidden checkpoint's test in
+    // Gradescope's results.json (after_due_date, after_published or hidden).
+    HiddenAs hidden_as = HiddenAs::AfterDueDate;
     bool progress = true;  // a line per lab as it finishes
     // --verbose: the sandbox's layers in a line after the total (summary.txt
     // and index.html have them always).

@@ -205,7 +205,8 @@ public:
         std::error_code ec;
         fs::remove_all(grade, ec);
         try {
-            not_graded_command(reason, log, grade.string(), layout_.format, options_.labs);
+            not_graded_command(reason, log, grade.string(), layout_.format, options_.labs,
+                               options_.hidden_as);
             fs::copy_file(grade / "results.json", results_ / "results.json",
                           fs::copy_options::overwrite_existing);
         } catch (const std::exception& e) {
@@ -303,6 +304,9 @@ private:
         if (layout_.format == ResultsFormat::PrairieLearn) {
             command.insert(command.end(), {"--format", "prairielearn"});
             shown += " --format prairielearn";
+        } else {
+            command.insert(command.end(), {"--hidden-as", name_of(options_.hidden_as)});
+            shown += std::string(" --hidden-as ") + name_of(options_.hidden_as);
         }
         for (const std::string& lab : options_.labs) {
             command.push_back(lab);

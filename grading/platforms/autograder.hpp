@@ -16,7 +16,9 @@ namespace grading {
 // `course gradescope OUT` and `course prairielearn OUT`: the folders each
 // platform takes (gradescope/gradescope_folder.cpp,
 // prairielearn/prairielearn_folder.cpp).
-int gradescope_command(const std::string& out_dir);
+// `hidden_as` goes into run_autograder: how Gradescope shows the tests of
+// hidden checkpoints (reports.hpp, HiddenAs).
+int gradescope_command(const std::string& out_dir, HiddenAs hidden_as = HiddenAs::AfterDueDate);
 int prairielearn_command(const std::string& out_dir);
 
 // The files students edit (those with solution blocks), each with its
@@ -38,7 +40,7 @@ void require_template(const std::filesystem::path& source, const std::string& fo
                       const std::string& name);
 
 // `course autograde [LAB...] [--layout L] [--root DIR] [--source DIR] [--data DIR]
-// [--user USER] [--timeout SEC]` (autograde.cpp): grades a submission and
+// [--user USER] [--timeout SEC] [--hidden-as V]` (autograde.cpp): grades a submission and
 // writes ROOT/results/results.json, complete whatever the submission does;
 // exits 0 unless its own arguments are wrong. The layouts:
 // - gradescope: ROOT (/autograder) holds source/ (the autograder folder,
@@ -55,6 +57,9 @@ struct AutogradeOptions {
     std::string data;              // prairielearn; required
     std::string user = "student";  // builds and runs the submission (when root)
     std::string timeout = "60";    // seconds each lab may run; passed on to `course grade`
+    // gradescope: the visibility of a hidden checkpoint's test (run_autograder
+    // passes what `course gradescope --hidden-as` wrote into it).
+    HiddenAs hidden_as = HiddenAs::AfterDueDate;
 };
 int autograde_command(const AutogradeOptions& options);
 
@@ -67,7 +72,8 @@ int autograde_command(const AutogradeOptions& options);
 // not gradable (prairielearn.hpp). Returns 1, the exit status of a failed grading.
 int not_graded_command(const std::string& reason, const std::string& log_file,
                        const std::string& out_dir, ResultsFormat format = ResultsFormat::Gradescope,
-                       const std::vector<std::string>& labs = {});
+                       const std::vector<std::string>& labs = {},
+                       HiddenAs hidden_as = HiddenAs::AfterDueDate);
 
 // The last `lines` lines of the file at `path`, taken from at most its last
 // MiB; throws fw::Error when it cannot be read.

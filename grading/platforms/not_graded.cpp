@@ -36,7 +36,7 @@ std::string log_tail(const std::string& path, int lines) {
 
 int not_graded_command(const std::string& reason, const std::string& log_file,
                        const std::string& out_dir, ResultsFormat format,
-                       const std::vector<std::string>& labs) {
+                       const std::vector<std::string>& labs, HiddenAs hidden_as) {
     const std::string log = log_file.empty() ? "" : log_tail(log_file, 200);
     // The checks, named and scored as `course grade` names them, judged on the
     // outputs of a child that never ran: an empty work directory.
@@ -54,7 +54,7 @@ int not_graded_command(const std::string& reason, const std::string& log_file,
         for (CheckResult& check : result.checks) check.output.clear();  // the status says why
         run.labs.push_back(std::move(result));
     }
-    write_reports(run, out_dir);
+    write_reports(run, out_dir, {ResultsFormat::Gradescope, "", hidden_as});
     const std::string path = report::in_dir(out_dir, "results.json");
     if (format == ResultsFormat::PrairieLearn) {
         report::write_text_file(path, prairielearn_not_gradable_json(reason, log));

@@ -10,6 +10,19 @@
 #include "grading/report/report_text.hpp"
 
 namespace grading {
+
+const char* name_of(HiddenAs hidden_as) {
+    switch (hidden_as) {
+        case HiddenAs::AfterPublished:
+            return "after_published";
+        case HiddenAs::Hidden:
+            return "hidden";
+        case HiddenAs::AfterDueDate:
+            break;
+    }
+    return "after_due_date";
+}
+
 namespace report {
 
 namespace {
@@ -71,7 +84,7 @@ std::string overview_html(const GradeRun& run) {
     return h;
 }
 
-std::string results_json(const GradeRun& run, Thumbnails& thumbnails) {
+std::string results_json(const GradeRun& run, Thumbnails& thumbnails, HiddenAs hidden_as) {
     nlohmann::ordered_json tests = nlohmann::ordered_json::array();
     nlohmann::ordered_json labs = nlohmann::ordered_json::array();
     for (size_t li = 0; li < run.labs.size(); ++li) {
@@ -94,9 +107,9 @@ std::string results_json(const GradeRun& run, Thumbnails& thumbnails) {
             test["status"] = cp.passed ? "passed" : "failed";
             test["output"] = checkpoint_html(lab, cp, thumbnails);
             test["output_format"] = "html";
-            // Gradescope's visible and hidden (it also has after_due_date
-            // and after_published).
-            test["visibility"] = name_of(cp.checks.front()->visibility);
+            // Gradescope's visible, or for a hidden checkpoint `hidden_as`.
+            test["visibility"] =
+                cp.visibility == Visibility::Hidden ? name_of(hidden_as) : "visible";
             test["extra_data"] = {{"lab", clean_text(lab.lab)},
                                   {"checkpoint", clean_text(cp.checkpoint)},
                                   {"checks", checks}};
@@ -127,12 +140,13 @@ std::string results_json(const GradeRun& run, Thumbnails& thumbnails) {
 
 }  // namespace
 
-std::string gradescope_results_json(const GradeRun& run, const std::string& out_dir) {
+std::string gradescope_results_json(const GradeRun& run, const std::string& out_dir,
+                                    HiddenAs hidden_as) {
     // Pictures, checkpoint by checkpoint in order, in what the text leaves of the limit.
     Thumbnails thumbnails(out_dir, 0);
     return within_limit(kResultsLimit, [&](size_t budget) {
         thumbnails.restart(budget);
-        return results_json(run, thumbnails);
+        return results_json(run, thumbnails, hidden_as);
     });
 }
 

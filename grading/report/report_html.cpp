@@ -47,11 +47,11 @@ section.lab > header { display: flex; gap: 1em; align-items: baseline; flex-wrap
                        margin-bottom: 0.6em; }
 .status.ok { color: #17692c; } .status.bad { color: #b3261e; font-weight: 600; }
 article.check { margin: 0.6em 0; padding: 0.6em 0.8em; border-radius: 6px; border: 1px solid #ddd;
-                border-left: 6px solid #2e8b46; }
+                border-left: 6px solid #237a3b; }
 article.check.fail { border-left-color: #c62828; background: #fff6f5; }
 .badge { display: inline-block; min-width: 3em; text-align: center; border-radius: 4px;
          padding: 0 0.4em; margin-right: 0.4em; color: #fff; font-size: 0.85em; }
-.badge.pass { background: #2e8b46; } .badge.fail { background: #c62828; }
+.badge.pass { background: #237a3b; } .badge.fail { background: #c62828; }
 .points { float: right; font-variant-numeric: tabular-nums; }
 .tag { display: inline-block; font-size: 0.8em; font-weight: normal; color: #555;
        border: 1px solid #bbb; border-radius: 4px; padding: 0 0.35em; margin-left: 0.4em; }
@@ -72,6 +72,8 @@ table.checks th:nth-child(2) { width: 20%; }
 table.checks tr.fail td:nth-child(4) pre { background: #fde8e6; }
 table.checks pre { white-space: pre-wrap; overflow-wrap: anywhere; }
 pre.note { background: none; padding: 0; color: #555; }
+.visually-hidden { position: absolute; width: 1px; height: 1px; margin: -1px; padding: 0;
+                   overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }
 .missing { padding: 2em 0.5em; border: 1px dashed #c62828; color: #b3261e; font-size: 0.9em;
            text-align: center; word-break: break-all; }
 )";
@@ -207,11 +209,23 @@ std::string card_html(const LabResult& lab, const CheckpointResult& cp, const st
           << "</div>\n";
     else if (!cp.rendered.empty())  // probes and stats: the frame they were read from
         h << "<div class=\"images small\">" << images.figure("rendered", cp.rendered) << "</div>\n";
-    h << "<table class=\"checks\">\n<tr><th></th><th>check</th><th>Expected</th><th>Observed</th>"
+    h << "<table class=\"checks\">\n<tr><th><span "
+         "class=\"visually-hidden\">result</span></th><th>check</th><th>Expected</th><th>Observed</"
+         "th>"
          "</tr>\n";
     for (const CheckResult* c : cp.checks) h << check_row(lab, *c);
     h << "</table>\n</article>\n";
     return h.str();
+}
+
+// The points of a lab's hidden checkpoints (Visibility::Hidden): `course
+// release` leaves them out of the student's copy, and Gradescope shows them
+// after the due date (`course gradescope --hidden-as`).
+double hidden_points(const LabResult& lab) {
+    double hidden = 0;
+    for (const CheckpointResult& cp : by_checkpoint(lab))
+        if (cp.visibility == Visibility::Hidden) hidden += cp.max_score;
+    return hidden;
 }
 
 std::string lab_html(const LabResult& lab, size_t index, ImageTable& images) {
@@ -219,9 +233,11 @@ std::string lab_html(const LabResult& lab, size_t index, ImageTable& images) {
     std::ostringstream h;
     h << "<section class=\"lab" << (lab.passed() ? "" : " fail") << "\" id=\"lab-" << index
       << "\">\n<header><h2>" << escape_markup(lab.lab) << "</h2><span>" << points(lab.score())
-      << " / " << points(lab.max_score()) << " points</span><span class=\"status "
-      << (ok ? "ok" : "bad") << "\">" << escape_markup(lab.status.text()) << "</span><span>"
-      << points(lab.seconds) << " s</span></header>\n";
+      << " / " << points(lab.max_score()) << " points"
+      << (hidden_points(lab) > 0 ? " (" + points(hidden_points(lab)) + " hidden)" : "")
+      << "</span><span class=\"status " << (ok ? "ok" : "bad") << "\">"
+      << escape_markup(lab.status.text()) << "</span><span>" << points(lab.seconds)
+      << " s</span></header>\n";
     if (!ok)
         h << "<details open><summary>The lab's output (last lines)</summary><pre>"
           << escape_markup(lab.log.empty() ? "(no output)" : lab.log) << "</pre></details>\n";
@@ -236,6 +252,26 @@ std::string lab_html(const LabResult& lab, size_t index, ImageTable& images) {
     for (size_t i : order) h << card_html(lab, checkpoints[i], card_id(index, i), images);
     h << "</section>\n";
     return h.str();
+}
+
+// A sentence on the hidden points of the run; empty when it has none.
+std::string hidden_html(const GradeRun& run) {
+    double hidden = 0, scored = 0;
+    size_t checkpoints = 0;
+    for (const LabResult& lab : run.labs)
+        for (const CheckpointResult& cp : by_checkpoint(lab))
+            if (cp.visibility == Visibility::Hidden) {
+                ++checkpoints;
+                hidden += cp.max_score;
+                scored += cp.score;
+            }
+    if (checkpoints == 0) return "";
+    return "<p class=\"hidden-points\">" + points(hidden) + " of the " + points(run.max_score()) +
+           " points are hidden (" + std::to_string(checkpoints) +
+           (checkpoints == 1 ? " hidden checkpoint" : " hidden checkpoints") + ", " +
+           points(scored) +
+           " points scored there): students do not see these checkpoints, "
+           "and their copy of the course does not grade them.</p>\n";
 }
 
 std::string overview_html(const GradeRun& run) {
@@ -270,7 +306,7 @@ std::string overview_html(const GradeRun& run) {
       << " checks passed &middot; " << run.labs.size() << (run.labs.size() == 1 ? " lab" : " labs")
       << (run.backend.empty() ? "" : " &middot; backend " + escape_markup(run.backend))
       << " &middot; " << points(run.seconds) << " s</p>\n"
-      << sandbox_html(run.sandbox);
+      << hidden_html(run) << sandbox_html(run.sandbox);
     if (run.labs.empty()) {
         h << "<p>No labs were graded.</p>\n";
         return h.str();
@@ -312,8 +348,9 @@ std::string html_report(const GradeRun& run, const std::string& out_dir) {
     // The body first: it decides which images the <style> block must hold.
     ImageTable images(out_dir);
     std::ostringstream body;
-    body << "<h1>Grading report</h1>\n" << overview_html(run);
+    body << "<main>\n<h1>Grading report</h1>\n" << overview_html(run);
     for (size_t li = 0; li < run.labs.size(); ++li) body << lab_html(run.labs[li], li, images);
+    body << "</main>\n";
     std::ostringstream h;
     h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<title>Grading report: " << points(run.score()) << " / " << points(run.max_score())

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "grading/report/reports.hpp"
 #include "grading/results/results.hpp"
 
 namespace grading::report {
@@ -48,7 +49,9 @@ size_t passed_count(const LabResult& lab);
 size_t check_count(const GradeRun& run);
 
 // results.json in Gradescope's autograder format (gradescope_results.cpp):
-// a test per checkpoint, pictures of what failed within kResultsLimit.
-std::string gradescope_results_json(const GradeRun& run, const std::string& out_dir);
+// a test per checkpoint, pictures of what failed within kResultsLimit; a
+// hidden checkpoint's test has the visibility `hidden_as`.
+std::string gradescope_results_json(const GradeRun& run, const std::string& out_dir,
+                                    HiddenAs hidden_as = HiddenAs::AfterDueDate);
 
 }  // namespace grading::report

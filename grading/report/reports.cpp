@@ -351,7 +351,8 @@ void write_reports(const GradeRun& run, const std::string& out_dir, const Result
     if (results.format == ResultsFormat::PrairieLearn)
         report::write_text_file(results_path, prairielearn_results_json(run, out_dir));
     else
-        report::write_text_file(results_path, report::gradescope_results_json(run, out_dir));
+        report::write_text_file(results_path,
+                                report::gradescope_results_json(run, out_dir, results.hidden_as));
     report::write_text_file(report::in_dir(out_dir, "junit.xml"), report::junit_xml(run));
     report::write_text_file(report::in_dir(out_dir, "index.html"),
                             report::html_report(run, out_dir));

@@ -12,9 +12,18 @@ namespace grading {
 
 // What results.json holds (`course grade --format`) and where it goes (`--results`).
 enum class ResultsFormat { Gradescope, PrairieLearn };
+// How Gradescope shows the tests of hidden checkpoints (`--hidden-as`): one
+// of its results.json's visibility values. after_due_date (the default) and
+// after_published keep the student's total score in view; hidden (never
+// shown) hides the total as well, which Gradescope does whenever a test is
+// hidden.
+enum class HiddenAs { AfterDueDate, AfterPublished, Hidden };
+const char* name_of(HiddenAs hidden_as);  // "after_due_date", "after_published", "hidden"
+
 struct ResultsFile {
     ResultsFormat format = ResultsFormat::Gradescope;
-    std::string path;  // empty: results.json in the output directory
+    std::string path;                             // empty: results.json in the output directory
+    HiddenAs hidden_as = HiddenAs::AfterDueDate;  // Gradescope's format only
 };
 
 // The score table: one line per lab with its score and status; every failed

@@ -50,6 +50,7 @@ Expected expected_from_data(const fs::path& source) {
         }
         for (const fw::Checkpoint& cp : f.checkpoints) {
             e.checks[f.lab + " / " + cp.name] += static_cast<int>(cp.checks.size());
+            if (cp.visibility == "hidden") e.hidden.insert(f.lab + " / " + cp.name);
             for (const json& check : cp.checks) e.points += check["points"].get<double>();
         }
     }
@@ -176,6 +177,12 @@ void check_complete(const Run& run, const Expected& e) {
                                   "visibility", "extra_data"})
             CHECK_MESSAGE(t.contains(field), "test " << t.dump() << " has no " << field);
         score += t.value("score", 0.0);
+        // A hidden checkpoint's test shows after the due date (run_autograder's
+        // default): Gradescope's "hidden" would hide the student's total too.
+        const std::string name = t.value("name", "");
+        CHECK_MESSAGE(
+            t.value("visibility", "") == (e.hidden.count(name) ? "after_due_date" : "visible"),
+            name);
     }
     std::map<std::string, int> seen;
     for (const json& c : grade_test::checks_of(r)) {

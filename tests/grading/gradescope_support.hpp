@@ -10,6 +10,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ using nlohmann::json;
 // "lab / checkpoint", how many checks; and the points of them all.
 struct Expected {
     std::map<std::string, int> checks;
+    std::set<std::string> hidden;  // "lab / checkpoint" of the hidden checkpoints
     double points = 0;
     std::string victim;      // lab 0's name ("lab" in labs/00_*/checkpoints.json)
     std::string victim_dir;  // its folder, e.g. 00_pipeline

@@ -55,6 +55,33 @@ TEST_CASE("gradescope: the folder holds the repository, the scripts and the stud
                                        " gradescope --out " + shell_quote(source.string()));
     fw::test::check_mentions(again.output, {"not empty", source.string()});
     CHECK(again.exit_code == 2);
+    // There are hidden checkpoints, which run_autograder shows after the due date.
+    CHECK(!ag.expected.hidden.empty());
+    fw::test::check_mentions(ag.scripts["run_autograder"],
+                             {"\nhidden_as=after_due_date\n", "--hidden-as \"$hidden_as\""});
+}
+
+TEST_CASE("gradescope: --hidden-as goes into run_autograder; another value is refused") {
+    const std::string course = shell_quote(fw::test::bin_dir() + "/course");
+    const fs::path dir = fs::path(fw::test::out_dir()) / "hidden-as";
+    for (const char* as : {"after_published", "hidden"}) {
+        INFO(as);
+        fs::remove_all(dir);
+        const auto r = fw::test::run_command("env -u LAB_ROOT " + course + " gradescope --out " +
+                                             shell_quote(dir.string()) + " --hidden-as " + as);
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        fw::test::check_mentions(r.output, {as});
+        const std::string script = read_text(dir / "run_autograder");
+        fw::test::check_mentions(
+            script, {"\nhidden_as=" + std::string(as) + "\n", "--hidden-as \"$hidden_as\""});
+        CHECK(script.find("hidden_as=after_due_date") == std::string::npos);
+    }
+    fs::remove_all(dir);
+    const auto bad = fw::test::run_command(course + " gradescope --out " +
+                                           shell_quote(dir.string()) + " --hidden-as never");
+    CHECK(bad.exit_code == 2);
+    fw::test::check_mentions(bad.output, {"--hidden-as", "never"});
+    CHECK(!fs::exists(dir));
 }
 
 TEST_CASE("gradescope: nothing submitted is graded with the student versions, below full marks") {

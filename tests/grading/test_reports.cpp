@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -160,7 +161,9 @@ TEST_CASE("results.json follows Gradescope's format: one test per checkpoint") {
           fw::read_png(f.dir + "/" + f.pngs[1]).pixels);
 
     CHECK(tests[1].at("name") == "00_pipeline / secret");
-    CHECK(tests[1].at("visibility") == "hidden");
+    // A hidden checkpoint is shown after the due date by default: Gradescope's
+    // "hidden" would hide the student's total score too.
+    CHECK(tests[1].at("visibility") == "after_due_date");
     CHECK(tests[1].at("status") == "passed");
     CHECK(inline_pngs(tests[1].at("output")).empty());
     CHECK(tests[2].at("name") == "01_transforms / rotate");
@@ -175,6 +178,25 @@ TEST_CASE("results.json follows Gradescope's format: one test per checkpoint") {
     CHECK(overall.find(kCrash) != std::string::npos);
     CHECK(overall.find("Segmentation fault &lt;core dumped&gt;") != std::string::npos);
     CHECK(j.at("extra_data").at("labs").size() == 2);
+}
+
+TEST_CASE("results.json: a hidden checkpoint's test has the visibility --hidden-as chose") {
+    Fixture f;
+    for (const grading::HiddenAs as :
+         {grading::HiddenAs::AfterDueDate, grading::HiddenAs::AfterPublished,
+          grading::HiddenAs::Hidden}) {
+        const std::string dir = f.dir + "/hidden-as-" + grading::name_of(as);
+        grading::write_reports(f.run, dir, {grading::ResultsFormat::Gradescope, "", as});
+        const auto j = nlohmann::json::parse(read_text(dir + "/results.json"));
+        std::map<std::string, std::string> visibility;
+        for (const auto& t : j.at("tests")) visibility[t.at("name")] = t.at("visibility");
+        CHECK(visibility["00_pipeline / triangle"] == "visible");
+        CHECK(visibility["00_pipeline / secret"] == grading::name_of(as));
+        CHECK(visibility["01_transforms / rotate"] == "visible");
+    }
+    CHECK(std::string(grading::name_of(grading::HiddenAs::AfterDueDate)) == "after_due_date");
+    CHECK(std::string(grading::name_of(grading::HiddenAs::AfterPublished)) == "after_published");
+    CHECK(std::string(grading::name_of(grading::HiddenAs::Hidden)) == "hidden");
 }
 
 TEST_CASE("results.json's pictures: shrunk to 160 pixels, the difference kept bright") {
@@ -354,6 +376,15 @@ TEST_CASE("index.html is self-contained: a card per checkpoint, images first, th
     CHECK(card.find("triangle") < card.find("secret"));
     CHECK(card.find("<figure>") < card.find("<table class=\"checks\">"));
     CHECK(card.find("probe (8, 8) colour") < card.find("image vs reference"));
+
+    // The hidden points are counted, in the total and in their lab's header;
+    // the page has one <main>, and no table header without text.
+    CHECK(html.find("3 of the 16 points are hidden (1 hidden checkpoint, 3 points scored "
+                    "there)") != std::string::npos);
+    CHECK(html.find("7 / 9 points (3 hidden)") != std::string::npos);
+    CHECK(count(html, "<main>") == 1);
+    CHECK(count(html, "</main>") == 1);
+    CHECK(count(html, "<th></th>") == 0);
 }
 
 TEST_CASE("summary.txt has an aligned row per lab, the failed checks and the total") {

@@ -5,6 +5,8 @@
 // - setup.sh and run_autograder at the top (from grading/platforms/gradescope/):
 //   Gradescope runs setup.sh once, as root, to build its image, and
 //   run_autograder (which runs `course autograde`) for each submission;
+//   run_autograder's `hidden_as=` line holds `--hidden-as`, how Gradescope
+//   shows the tests of hidden checkpoints;
 // - student_files.txt: the files students edit (those with solution blocks),
 //   and student_versions/<file>: their student versions (`course release`),
 //   which `course autograde` grades in place of a file a submission lacks,
@@ -33,6 +35,18 @@ constexpr const char* kTemplates = "grading/platforms/gradescope";
 constexpr const char* kScripts[] = {"setup.sh", "run_autograder"};
 constexpr const char* kStudentFiles = "student_files.txt";
 constexpr const char* kStudentVersions = "student_versions";
+// run_autograder's line that says how hidden checkpoints' tests are shown.
+constexpr const char* kHiddenAsLine = "\nhidden_as=after_due_date\n";
+
+// run_autograder's text, with `hidden_as` in its hidden_as= line.
+std::string with_hidden_as(std::string text, const fs::path& from, HiddenAs hidden_as) {
+    const size_t at = text.find(kHiddenAsLine);
+    if (at == std::string::npos)
+        throw fw::Error("'" + from.string() + "' has no line 'hidden_as=after_due_date', where " +
+                        "course gradescope writes --hidden-as");
+    return text.replace(at + 1, std::string(kHiddenAsLine).size() - 2,
+                        std::string("hidden_as=") + name_of(hidden_as));
+}
 
 // What the folder will hold, read and checked before anything is written.
 struct FolderPlan {
@@ -52,7 +66,8 @@ FolderPlan plan_folder(const fs::path& source) {
 }
 
 // Writes the folder; returns how many files of the repository it copied.
-size_t write_folder(const FolderPlan& plan, const fs::path& source, const fs::path& dest) {
+size_t write_folder(const FolderPlan& plan, const fs::path& source, const fs::path& dest,
+                    HiddenAs hidden_as) {
     std::error_code ec;
     fs::create_directories(dest, ec);
     if (ec)
@@ -63,19 +78,25 @@ size_t write_folder(const FolderPlan& plan, const fs::path& source, const fs::pa
         copy_entry(source / rel, dest / rel);
         ++copied;
     }
-    for (const char* script : kScripts)
-        write_file(dest / script, read_file(source / kTemplates / script), kExecutable);
+    for (const char* script : kScripts) {
+        const fs::path from = source / kTemplates / script;
+        std::string text = read_file(from);
+        if (std::string(script) == "run_autograder") text = with_hidden_as(text, from, hidden_as);
+        write_file(dest / script, text, kExecutable);
+    }
     write_student_files(plan.students, dest);
     return copied;
 }
 
 void print_folder(const FolderPlan& plan, const fs::path& source, size_t copied,
-                  const std::string& out_dir) {
+                  const std::string& out_dir, HiddenAs hidden_as) {
     std::printf("course gradescope: the autograder for %s\n", source.string().c_str());
     std::printf("  %zu files of the repository (solutions and hidden checkpoints included)\n",
                 copied);
     for (const char* script : kScripts)
         std::printf("  %-48s from %s/%s\n", script, kTemplates, script);
+    std::printf("  hidden checkpoints' tests shown on Gradescope: %s (--hidden-as)\n",
+                name_of(hidden_as));
     std::printf("  %-48s %zu files students edit:\n", kStudentFiles, plan.students.size());
     for (const auto& [rel, text] : plan.students)
         std::printf("    %s (student version in %s/)\n", rel.c_str(), kStudentVersions);
@@ -128,12 +149,12 @@ void write_student_files(const StudentFiles& students, const fs::path& dest) {
     write_file(dest / kStudentFiles, list, kReadable);
 }
 
-int gradescope_command(const std::string& out_dir) {
+int gradescope_command(const std::string& out_dir, HiddenAs hidden_as) {
     const fs::path source(source_root()), dest(out_dir);
     require_new_output_dir(dest);
     const FolderPlan plan = plan_folder(source);
-    const size_t copied = write_folder(plan, source, dest);
-    print_folder(plan, source, copied, out_dir);
+    const size_t copied = write_folder(plan, source, dest, hidden_as);
+    print_folder(plan, source, copied, out_dir, hidden_as);
     return 0;
 }
 
