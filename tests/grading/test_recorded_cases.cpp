@@ -98,7 +98,13 @@ grading::CheckResult judged(const Recorded& r, const std::string& function, cons
         from_file.max_score = from_code.max_score = 1;
         grading::judge_unit(r.copy, check, unit, 1, &units, "", from_file);
         grading::judge_unit(r.source, check, unit, 1, &units, "", from_code);
-        CHECK(from_file.output == from_code.output);
+        // Word for word but the first words: where the cases come from.
+        const auto after_source = [](const std::string& text) {
+            return text.substr(text.find(':'));
+        };
+        CHECK(from_file.output.rfind("the cases recorded in this copy", 0) == 0);
+        CHECK(from_code.output.rfind("seed 1 (COURSE_SEED=1", 0) == 0);
+        CHECK(after_source(from_file.output) == after_source(from_code.output));
         return from_file;
     }
     FAIL("no unit check of " << function);
