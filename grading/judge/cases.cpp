@@ -18,6 +18,8 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 constexpr int kFormat = 1;
+constexpr const char* kForStudentCopy = "student copy";
+constexpr const char* kForAutograder = "autograder";
 
 // The lab's compiled reference for `function`; recording a recorded one
 // would lose the calls it does not hold.
@@ -32,7 +34,7 @@ const ReferenceUnit& compiled_reference(const LabData& lab, const std::string& f
 
 }  // namespace
 
-json record_unit_cases(const LabData& lab, unsigned seed, int max_random) {
+json record_unit_cases(const LabData& lab, unsigned seed, int max_random, RecordFor recorded_for) {
     LabData parsed = lab;
     if (parsed.checks.size() != parsed.file.checkpoints.size()) parse_checks(parsed);
     std::seed_seq seq{seed};
@@ -41,7 +43,8 @@ json record_unit_cases(const LabData& lab, unsigned seed, int max_random) {
     json checks = json::array();
     for (size_t k = 0; k < parsed.file.checkpoints.size(); ++k) {
         const fw::Checkpoint& cp = parsed.file.checkpoints[k];
-        if (cp.visibility == "hidden") continue;  // not in the student's copy
+        if (cp.visibility == "hidden" && recorded_for == RecordFor::StudentCopy)
+            continue;  // not in the student's copy
         for (size_t i = 0; i < parsed.checks[k].size(); ++i) {
             if (parsed.checks[k][i].kind != CheckKind::Unit) continue;
             const UnitCheck& check = parsed.checks[k][i].as<UnitCheck>();
@@ -64,8 +67,13 @@ json record_unit_cases(const LabData& lab, unsigned seed, int max_random) {
     }
     json functions = json::object();
     for (const auto& [name, recorder] : recorders) functions[name] = recorder->entry();
-    return {{"format", kFormat},        {"lab", lab.id},          {"seed", seed},
-            {"max_random", max_random}, {"functions", functions}, {"checks", checks}};
+    return {{"format", kFormat},
+            {"lab", lab.id},
+            {"seed", seed},
+            {"max_random", max_random},
+            {"for", recorded_for == RecordFor::Autograder ? kForAutograder : kForStudentCopy},
+            {"functions", functions},
+            {"checks", checks}};
 }
 
 void write_unit_cases(const std::string& path, const json& cases) {
@@ -103,8 +111,20 @@ RecordedChecks load_unit_cases(const LabData& lab) {
         if (cases.at("format") != kFormat)
             throw fw::Error("it is of format " + cases.at("format").dump() + ", course reads " +
                             std::to_string(kFormat));
-        for (const auto& [name, entry] : cases.at("functions").items())
-            register_reference(lab.dir, recorded_reference(name, entry));
+        const std::string recorded_for = cases.value("for", kForStudentCopy);
+        if (recorded_for != kForStudentCopy && recorded_for != kForAutograder)
+            throw fw::Error("\"for\" is \"" + recorded_for + "\", not \"" + kForStudentCopy +
+                            "\" or \"" + kForAutograder + "\"");
+        const std::string what =
+            recorded_for == kForAutograder
+                ? "the cases the course recorded for its autograder (seed " +
+                      cases.at("seed").dump() + ")"
+                : std::string("the cases recorded in this copy (the autograder draws fresh ones)");
+        for (const auto& [name, entry] : cases.at("functions").items()) {
+            ReferenceUnit unit = recorded_reference(name, entry);
+            unit.recorded_cases = what;
+            register_reference(lab.dir, std::move(unit));
+        }
         return read_checks(cases.at("checks"));
     } catch (const std::exception& e) {
         throw fw::UsageError(path + ": " + e.what() +

@@ -18,7 +18,7 @@
 // checkpoints.json as always, and must be among those recorded).
 //
 // The file:
-//   {"format": 1, "lab": "transforms", "seed": 7, "max_random": 50,
+//   {"format": 1, "lab": "transforms", "seed": 7, "max_random": 50, "for": "student copy",
 //    "functions": {"translate": <a recorded reference, recorded.hpp>, ...},
 //    "checks": [{"checkpoint": "translate", "check": 3, "function": "translate",
 //                "random": [[args], ...]}, ...]}
@@ -41,7 +41,13 @@ namespace grading {
 // every function the table of results judging needs (recorded.hpp). The
 // same lab and seed give the same value. Throws fw::Error when a function
 // has no compiled reference.
-nlohmann::json record_unit_cases(const LabData& lab, unsigned seed, int max_random);
+//
+// For whom: a student's copy (`course release`) gets the visible checks only;
+// an autograder without references (PrairieLearn's public image) gets every
+// check, hidden ones too, and keeps the file where students cannot read it.
+enum class RecordFor { StudentCopy, Autograder };
+nlohmann::json record_unit_cases(const LabData& lab, unsigned seed, int max_random,
+                                 RecordFor recorded_for = RecordFor::StudentCopy);
 
 // Writes `cases` to `path` (its folder created), compactly, one line.
 void write_unit_cases(const std::string& path, const nlohmann::json& cases);

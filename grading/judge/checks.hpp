@@ -88,9 +88,10 @@ struct Check {
 
 // A lab as course sees it: its folder and data file, never its code.
 struct LabData {
-    std::string id;    // the data file's "lab", e.g. "pipeline"
-    std::string dir;   // its folder under labs/, e.g. "00_pipeline"
-    std::string root;  // the repository (source_root())
+    std::string id;       // the data file's "lab", e.g. "pipeline"
+    std::string dir;      // its folder under labs/, e.g. "00_pipeline"
+    std::string root;     // the repository (source_root())
+    std::string sources;  // the student's source files (sources_root(root))
     fw::CheckpointFile file;
     // Each checkpoint's checks, parsed (parse_checks), in the file's order.
     std::vector<std::vector<Check>> checks;

@@ -336,7 +336,7 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                     judge_stat(check.as<StatCheck>(), *frame, result);
                     break;
                 case CheckKind::Forbidden:
-                    judge_forbidden(lab, check.as<ForbiddenCheck>(), result);
+                    judge_forbidden(lab, check.as<ForbiddenCheck>(), outputs.status(), result);
                     break;
                 case CheckKind::Unit:
                     for (const UnitPlan& u : plan.units)

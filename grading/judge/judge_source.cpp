@@ -80,10 +80,18 @@ std::vector<int> lines_using(const std::string& text, const std::string& name) {
     return lines;
 }
 
-void judge_forbidden(const LabData& lab, const ForbiddenCheck& check, CheckResult& result) {
+void judge_forbidden(const LabData& lab, const ForbiddenCheck& check, const LabStatus& lab_status,
+                     CheckResult& result) {
+    if (!lab_status.ok()) {
+        result.passed = false;
+        result.score = 0.0;
+        result.output = "Not judged: the lab did not run to its end (" + lab_status.text() +
+                        "); the source is judged only beside a lab that runs.";
+        return;
+    }
     std::string found;
     for (const std::string& file : check.files) {
-        std::ifstream in(std::filesystem::path(lab.root) / file, std::ios::binary);
+        std::ifstream in(std::filesystem::path(lab.sources) / file, std::ios::binary);
         if (!in) {
             found += file + ": cannot be read; check that it exists and is readable\n";
             continue;

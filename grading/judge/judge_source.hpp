@@ -21,8 +21,12 @@ std::string code_only(const std::string& text);
 // "glm::translate(M, t)", not in "glm::translateX" or "my_glm::translate").
 std::vector<int> lines_using(const std::string& text, const std::string& name);
 
-// Judges `check` on the files under lab.root: passes when none of its names
-// occurs; else the output names each file, line and name with the rule.
-void judge_forbidden(const LabData& lab, const ForbiddenCheck& check, CheckResult& result);
+// Judges `check` on the files under lab.sources: passes when none of its names
+// occurs; else the output names each file, line and name with the rule. A
+// lab that did not run to its end (`lab_status`: it did not build, crashed or
+// timed out) fails the check unread: code that is not there, or does not
+// run, earns no points for what it leaves out.
+void judge_forbidden(const LabData& lab, const ForbiddenCheck& check, const LabStatus& lab_status,
+                     CheckResult& result);
 
 }  // namespace grading

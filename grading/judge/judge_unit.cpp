@@ -340,10 +340,10 @@ void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan
     for (const UnitCase& c : plan.cases) edges += c.edge ? 1 : 0;
     r.title = "unit " + ref.function.name + " (" + std::to_string(plan.cases.size()) + " cases)";
     // Recorded cases (a student's copy) are the same in every run.
-    const std::string source =
-        ref.recorded ? "the cases recorded in this copy (the autograder draws fresh ones)"
-                     : "seed " + std::to_string(seed) + " (COURSE_SEED=" + std::to_string(seed) +
-                           " repeats these cases)";
+    const std::string source = ref.recorded ? ref.recorded_cases
+                                            : "seed " + std::to_string(seed) +
+                                                  " (COURSE_SEED=" + std::to_string(seed) +
+                                                  " repeats these cases)";
     std::string head =
         source + ": " + std::to_string(plan.cases.size() - edges) + " random and " +
         std::to_string(edges) + " edge cases; tolerance " + tolerance_text(tol) +

@@ -6,6 +6,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/run/repository.hpp"
 
 namespace grading {
 
@@ -25,6 +26,7 @@ std::vector<LabData> discover_labs(const std::string& root) {
     for (const std::string& folder : folders) {
         LabData lab;
         lab.root = root;
+        lab.sources = sources_root(root);
         lab.dir = folder;
         lab.file = fw::read_checkpoint_file((labs_dir / folder / "checkpoints.json").string());
         lab.id = lab.file.lab;

@@ -366,6 +366,7 @@ int autograde_command(const AutogradeOptions& options) {
     // course grades with these checkpoints and references; `lab` reads its
     // shaders from the tree it was built from.
     setenv("LAB_ROOT", layout.data.c_str(), 1);
+    setenv("LAB_SOURCES", layout.source.c_str(), 1);
     unsetenv("LAB_SHADER_DIR");
     Autograder autograder(options, layout);
     try {

@@ -21,7 +21,8 @@ namespace grading {
 int gradescope_command(const std::string& out_dir, HiddenAs hidden_as = HiddenAs::AfterDueDate);
 int prairielearn_command(const std::string& out_dir);
 
-// The files students edit (those with solution blocks), each with its
+// The files students edit (those with solution blocks, staff files such as
+// the mistake suite left out: is_staff_only), each with its
 // student version (`course release`), in the order of `files` (paths
 // relative to `source`, from project_files()). Throws fw::Error listing
 // every file whose markers are wrong, or when no file has a solution block.

@@ -70,8 +70,12 @@ Planned plan_file(const fs::path& root, const std::string& rel, ReleasePlan& pla
 // The student's copy has no references (they give the solutions away): for
 // each lab with visible unit checks, their cases and course's results as
 // data: cases.json in the lab's grading/ folder (grading/judge/cases.hpp).
-void plan_unit_cases(const fs::path& root, ReleasePlan& plan, ReleaseSummary& summary) {
+void plan_unit_cases(const fs::path& root, const std::vector<std::string>& tracked,
+                     ReleasePlan& plan, ReleaseSummary& summary) {
     for (LabData& lab : discover_labs(root.string())) {
+        // A lab git does not track is not released (its files are named as such).
+        const std::string file = "labs/" + lab.dir + "/checkpoints.json";
+        if (std::find(tracked.begin(), tracked.end(), file) == tracked.end()) continue;
         parse_checks(lab);
         const nlohmann::json cases = record_unit_cases(lab, kCasesSeed, kCasesPerCheck);
         if (cases.value("checks", nlohmann::json::array()).empty()) continue;
@@ -108,7 +112,7 @@ ReleasePlan plan_release(const fs::path& root, ReleaseSummary& summary) {
         }
     }
     if (!errors.empty()) throw fw::Error("the release was not written: fix these first:" + errors);
-    plan_unit_cases(root, plan, summary);
+    plan_unit_cases(root, lists.tracked, plan, summary);
     return plan;
 }
 

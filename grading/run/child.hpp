@@ -72,6 +72,8 @@ public:
     std::string missing_reason(const std::string& name) const;
     // Non-empty when the work directory as a whole is over its cap.
     const std::string& too_large() const { return too_large_; }
+    // How the child ended.
+    const LabStatus& status() const { return run_.status; }
 
 private:
     std::string dir_;

@@ -16,6 +16,11 @@ std::string source_root() {
     return root && *root ? root : LAB_SOURCE_DIR;
 }
 
+std::string sources_root(const std::string& root) {
+    const char* sources = std::getenv("LAB_SOURCES");
+    return sources && *sources ? sources : root;
+}
+
 std::string resolve_lab_binary(const std::string& given) {
     std::string path = given;
     if (path.empty()) {

@@ -183,6 +183,9 @@ struct ReferenceUnit {
     // Built from a lab's recorded cases.json (recorded.hpp), not compiled:
     // it knows only the argument lists recorded there.
     bool recorded = false;
+    // For a recorded reference, what its cases are, as the report says it
+    // ("the cases recorded in this copy ...").
+    std::string recorded_cases;
     // Where set, how much the result (element k of a list; -1: the whole)
     // changes over one float step of the angles mistake recognition changed
     // to `changed` (`below` and `above`: those angles one float down and up),

@@ -16,6 +16,7 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -200,6 +201,20 @@ TEST_CASE("prairielearn: the image holds the student version; serverFilesCourse 
         const fs::path rel = fs::relative(entry.path(), repo);
         CHECK_MESSAGE(fs::exists(g.data / rel), rel << " is missing from serverFilesCourse");
     }
+    // No reference code in the public image (it holds the solutions); the
+    // unit checks' cases, hidden ones too, are recorded in serverFilesCourse.
+    for (const auto& entry : fs::recursive_directory_iterator(g.course / "labs")) {
+        const fs::path rel = fs::relative(entry.path(), g.course);
+        CHECK_MESSAGE(!(entry.path().parent_path().filename() == "grading" &&
+                        entry.path().extension() == ".cpp"),
+                      rel << ": a unit-check reference in the public image");
+    }
+    const json cases = json::parse(read_text(g.data / "labs/01_transforms/grading/cases.json"));
+    CHECK(cases.at("for") == "autograder");
+    std::set<std::string> recorded;
+    for (const json& c : cases.at("checks")) recorded.insert(c.at("checkpoint").get<std::string>());
+    CHECK(recorded.count("mirror_rotated") == 1);  // a hidden checkpoint's unit check
+    CHECK(std::find(hidden.begin(), hidden.end(), "transforms / mirror_rotated") != hidden.end());
     const std::string readme = read_text(g.out / "README.md");
     fw::test::check_mentions(readme,
                              {"externalGradingOptions", "/grade/serverFilesCourse/gl-labs/grade.sh",

@@ -183,15 +183,18 @@ Graded attack(const Profile& p, const std::string& mode, const std::string& env,
         fs::copy_file(transforms / "checkpoints.json",
                       tree + "/labs/01_transforms/checkpoints.json");
         fs::copy(transforms / "reference", tree + "/labs/01_transforms/reference");
+        // (Its forbidden-name check reads the source.)
+        fs::copy_file(transforms / "transforms_math.cpp",
+                      tree + "/labs/01_transforms/transforms_math.cpp");
         // The staged copies: the build may sit where `nobody` cannot enter.
         g = grade(st.env + " FAKE_LAB_REAL_COPY=" + st.lab + " LAB_ROOT=" + tree +
                       " FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=" + mode + " " + env,
-                  "pipeline transforms --run-as nobody --lab " + st.fake + options,
+                  "pipeline transforms --verbose --run-as nobody --lab " + st.fake + options,
                   fw::test::out_dir() + "/" + p.name + "-" + mode, p.wrapper);
         fs::remove_all(st.dir);
     } else {
         g = grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=" + mode + " " + env,
-                  "pipeline transforms --lab " + fake_lab() + options,
+                  "pipeline transforms --verbose --lab " + fake_lab() + options,
                   fw::test::out_dir() + "/" + p.name + "-" + mode, p.wrapper);
     }
     CHECK(g.exit_code == exit_code);

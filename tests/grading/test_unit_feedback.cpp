@@ -639,6 +639,34 @@ TEST_CASE("a forbidden name is found in code, never in comments or strings") {
     CHECK(code.find("comment") == std::string::npos);
 }
 
+TEST_CASE("a forbidden-name check reads the source only beside a lab that ran") {
+    grading::LabData lab;
+    lab.root = lab.sources = fw::test::source_dir();
+    grading::ForbiddenCheck check;
+    check.files = {"labs/01_transforms/transforms_math.cpp"};
+    check.names = {"glm::translate"};
+    check.rule = "by hand";
+    grading::CheckResult ran;
+    ran.max_score = 2;
+    grading::judge_forbidden(lab, check, grading::LabStatus(), ran);
+    CHECK(ran.passed);
+    CHECK(ran.score == 2);
+    // A submission that does not build keeps nothing for what it leaves out.
+    grading::CheckResult broken;
+    broken.max_score = 2;
+    grading::judge_forbidden(lab, check, grading::LabStatus::failed("it does not build"), broken);
+    CHECK_FALSE(broken.passed);
+    CHECK(broken.score == 0);
+    CHECK(broken.output.find("it does not build") != std::string::npos);
+    // A name that is there fails the check and is named with its line.
+    check.names = {"glm::mat4"};
+    grading::CheckResult found;
+    found.max_score = 2;
+    grading::judge_forbidden(lab, check, grading::LabStatus(), found);
+    CHECK_FALSE(found.passed);
+    CHECK(found.output.find("transforms_math.cpp:") != std::string::npos);
+}
+
 TEST_CASE("a unit check's points are proportional to its cases passed, rounded down to 0.1") {
     CHECK(grading::unit_points(4, 1008, 1009) == doctest::Approx(3.9));
     CHECK(grading::unit_points(4, 1009, 1009) == 4);

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "framework/text.hpp"
@@ -115,12 +116,22 @@ TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, re
     CHECK(results.at("score") == results.at("max_score"));
     CHECK(results.at("max_score").get<double>() > 0);
 
-    // Released to students, without its solutions.
+    // Not released while git does not track it, and the release says so...
     const fs::path release = out / "release";
     fs::remove_all(release);
-    CHECK(run("cd " + shell_quote(tree.string()) + " && " + bin + "course release --out " +
-              shell_quote(release.string()))
-              .exit_code == 0);
+    const std::string release_command = "cd " + shell_quote(tree.string()) + " && " + bin +
+                                        "course release --out " + shell_quote(release.string());
+    const fw::test::CommandResult untracked = run(release_command);
+    CHECK(untracked.exit_code == 0);
+    CHECK(untracked.output.find("labs/07_warmup/pipeline.cpp") != std::string::npos);
+    CHECK(untracked.output.find("git does not track it") != std::string::npos);
+    CHECK_FALSE(fs::exists(release / "labs/07_warmup"));
+
+    // ...and released to students, without its solutions, once added.
+    const std::string git = "git -C " + shell_quote(tree.string()) + " ";
+    REQUIRE(run(git + "add labs/07_warmup shaders/07_warmup").exit_code == 0);
+    fs::remove_all(release);
+    CHECK(run(release_command).exit_code == 0);
     const std::string student = read_text((release / "labs/07_warmup/pipeline.cpp").string());
     CHECK(student.find("FW_LAB(PipelineLab)") != std::string::npos);
     CHECK(student.find("BEGIN SOLUTION") == std::string::npos);
@@ -131,6 +142,14 @@ TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, re
               " -R '^warmup\\.' --output-on-failure")
               .exit_code == 0);
 
-    // Building, grading and releasing wrote nothing into the tree's files.
-    CHECK(changes(tree) == "?? labs/07_warmup/\n?? shaders/07_warmup/\n");
+    // Building, grading and releasing wrote nothing into the tree's files:
+    // git shows only the new lab's files, added.
+    const std::string after = changes(tree);
+    CHECK(!after.empty());
+    std::istringstream lines(after);
+    for (std::string line; std::getline(lines, line);) {
+        CAPTURE(line);
+        CHECK((line.empty() || line.rfind("A  labs/07_warmup/", 0) == 0 ||
+               line.rfind("A  shaders/07_warmup/", 0) == 0));
+    }
 }

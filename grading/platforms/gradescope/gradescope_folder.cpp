@@ -122,7 +122,9 @@ StudentFiles student_files(const fs::path& source, const std::vector<std::string
     std::string errors;
     for (const std::string& rel : files) {
         const fs::path path = source / rel;
-        if (!is_marked_source(rel) || !fs::is_regular_file(fs::symlink_status(path))) continue;
+        if (!is_marked_source(rel) || is_staff_only(rel) ||
+            !fs::is_regular_file(fs::symlink_status(path)))
+            continue;
         try {
             const std::string text = read_file(path);
             if (!solution_blocks(text, rel).empty())

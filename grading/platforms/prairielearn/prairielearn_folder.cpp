@@ -8,15 +8,19 @@
 // - serverFilesCourse/gl-labs/: for the course's private repository: grade.sh
 //   (grading/platforms/prairielearn/), the entrypoint, and every lab's checkpoints file
 //   and references, hidden ones included, which `course autograde` grades
-//   with;
+//   with, and each lab's unit cases (labs/NN_name/grading/cases.json,
+//   recorded for the autograder, hidden checks too, from a fresh seed): the
+//   image's `course` has no references to draw them from;
 // - README.md: how to build the image, and each lab's question files.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "framework/error.hpp"
+#include "grading/judge/cases.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
@@ -31,6 +35,8 @@ namespace {
 constexpr const char* kTemplates = "grading/platforms/prairielearn";
 constexpr const char* kFolder = "gl-labs";  // in serverFilesCourse/
 constexpr const char* kImage = "ACCOUNT/gl-labs-grader";
+// Random cases recorded per unit check, at most (each check's own count where lower).
+constexpr int kMaxRandom = 200;
 
 // What the folder will hold, read and checked before anything is written.
 struct Plan {
@@ -38,6 +44,8 @@ struct Plan {
     StudentFiles students;
     std::vector<LabData> labs;
     std::vector<std::string> data;  // labs/*/checkpoints.json and labs/*/reference/*
+    std::vector<std::pair<std::string, std::string>> cases;  // labs/*/grading/cases.json -> text
+    unsigned seed = 0;                                       // the cases' seed
 };
 
 Plan plan_folder(const fs::path& source) {
@@ -48,7 +56,14 @@ Plan plan_folder(const fs::path& source) {
     plan.files = project_files(source.string());
     plan.students = student_files(source, plan.files);
     plan.labs = discover_labs(source.string());
-    for (LabData& lab : plan.labs) parse_checks(lab);
+    plan.seed = std::random_device{}();
+    for (LabData& lab : plan.labs) {
+        parse_checks(lab);
+        const nlohmann::json cases =
+            record_unit_cases(lab, plan.seed, kMaxRandom, RecordFor::Autograder);
+        if (!cases.value("checks", nlohmann::json::array()).empty())
+            plan.cases.emplace_back("labs/" + lab.dir + "/grading/cases.json", cases.dump() + "\n");
+    }
     for (const std::string& rel : plan.files)
         for (const LabData& lab : plan.labs) {
             const std::string dir = "labs/" + lab.dir + "/";
@@ -90,7 +105,9 @@ run. PrairieLearn pulls only public images, so the course is split in two.
 - `serverFilesCourse/{FOLDER}/`: copy it to the course repository's
   `serverFilesCourse/{FOLDER}/`, which students cannot read. It holds
   `grade.sh`, the entrypoint, and every lab's checkpoints file and references,
-  hidden ones included.
+  hidden ones included, with the unit checks' cases (`labs/*/grading/cases.json`,
+  drawn from a new seed each time this folder is written): the image holds no
+  reference code, since that would give the solutions away.
 
 For each submission, `grade.sh LAB` puts the files in `/grade/student` in
 place of the student versions (by name), builds `lab` as the user `student`,
@@ -156,6 +173,7 @@ void write_folder(const Plan& plan, const fs::path& source, const fs::path& dest
     write_file(image / "Dockerfile", read_file(source / kTemplates / "Dockerfile"), kReadable);
     write_file(data / "grade.sh", read_file(source / kTemplates / "grade.sh"), kExecutable);
     for (const std::string& rel : plan.data) copy_entry(source / rel, data / rel);
+    for (const auto& [rel, text] : plan.cases) write_file(data / rel, text, kReadable);
     write_file(dest / "README.md", readme(plan), kReadable);
 }
 
@@ -172,6 +190,9 @@ int prairielearn_command(const std::string& out_dir) {
     std::printf("  %-40s grade.sh, and %zu checkpoints and reference files of %zu labs\n",
                 ("serverFilesCourse/" + std::string(kFolder) + "/").c_str(), plan.data.size(),
                 plan.labs.size());
+    for (const auto& [rel, text] : plan.cases)
+        std::printf("    %-38s the unit checks' cases, hidden ones too (seed %u, %zu bytes)\n",
+                    rel.c_str(), plan.seed, text.size());
     std::printf("  %-40s how to build the image, and each lab's question\n", "README.md");
     std::printf(
         "Build and push the image from %s/image, and copy %s/serverFilesCourse/%s/ into the "
