@@ -13,6 +13,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/image_matches.hpp"
 #include "grading/judge/image_words.hpp"
 #include "grading/judge/judge_source.hpp"
 #include "grading/judge/judge_unit.hpp"
@@ -129,7 +130,8 @@ void verdict(CheckResult& r, bool pass, const std::string& output) {
 }
 
 void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck& check,
-                 Frame& frame, const std::string& out_dir, CheckResult& r) {
+                 Frame& frame, const std::string& out_dir, ReferenceImages& references,
+                 CheckResult& r) {
     r.title = "image vs reference";
     fw::CompareOptions opt;
     opt.tolerance = check.tolerance;
@@ -167,8 +169,11 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
         fw::write_png(out_dir + "/" + r.difference, c.difference);
     }
     std::string where = c.passed ? "" : describe_difference(*image, reference, c);
+    if (!c.passed && !c.size_mismatch)
+        r.diagnosis = matching_checkpoint_sentence(lab, cp, *image, opt, references);
     verdict(r, c.passed,
-            expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where));
+            expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where) +
+                (r.diagnosis.empty() ? "" : "\n" + r.diagnosis));
 }
 
 void judge_probe(const ProbeCheck& check, const RenderPlan& plan, Frame& frame, CheckResult& r) {
@@ -310,6 +315,7 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
     // report on its own: the checkpoints go to `threads` threads.
     const std::vector<fw::Checkpoint>& checkpoints = lab.file.checkpoints;
     std::vector<std::vector<CheckResult>> by_checkpoint(checkpoints.size());
+    ReferenceImages references(lab);  // other checkpoints' images, for a failed frame
     parallel_for(checkpoints.size(), threads, [&](size_t k) {
         const fw::Checkpoint& cp = checkpoints[k];
         std::optional<Frame> frame;
@@ -327,7 +333,8 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
             result.max_score = check.points;
             switch (check.kind) {
                 case CheckKind::Image:
-                    judge_image(lab, cp, check.as<ImageCheck>(), *frame, out_dir, result);
+                    judge_image(lab, cp, check.as<ImageCheck>(), *frame, out_dir, references,
+                                result);
                     break;
                 case CheckKind::Probe:
                     judge_probe(check.as<ProbeCheck>(), *r->second, *frame, result);

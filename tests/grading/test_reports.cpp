@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "framework/image.hpp"
+#include "grading/judge/checks.hpp"
+#include "grading/judge/image_matches.hpp"
 #include "grading/judge/image_words.hpp"
 #include "grading/report/by_checkpoint.hpp"
 #include "grading/report/prairielearn_results.hpp"
@@ -290,6 +292,42 @@ TEST_CASE("a failed image check's words never say the same colour was expected a
     CHECK((light_first || dark_first));
     for (const std::string& w : {light_words, dark_words})
         CHECK(words.find("expected " + w + ", found " + w) == std::string::npos);
+}
+
+TEST_CASE("a failed frame that is another checkpoint's expected image is named so") {
+    std::vector<grading::LabData> labs =
+        grading::select_labs(grading::discover_labs(fw::test::source_dir()), {"transforms"});
+    REQUIRE(labs.size() == 1);
+    grading::LabData& lab = labs[0];
+    grading::parse_checks(lab);
+    auto checkpoint = [&](const std::string& name) -> const fw::Checkpoint& {
+        for (const fw::Checkpoint& cp : lab.file.checkpoints)
+            if (cp.name == name) return cp;
+        FAIL("no checkpoint " << name);
+        throw;
+    };
+    grading::ReferenceImages references(lab);
+    const fw::Image* srt = references.get("srt");
+    REQUIRE(srt != nullptr);
+    // trs drawn as srt: the one parameter in which they differ is named.
+    const std::string sentence = grading::matching_checkpoint_sentence(
+        lab, checkpoint("trs"), *srt, fw::CompareOptions{}, references);
+    CHECK(sentence ==
+          "Your frame is the one checkpoint srt expects (order \"srt\", here \"trs\"): your "
+          "code most likely treats order \"trs\" as \"srt\".");
+    // A frame that is no checkpoint's (all black), or of another size: nothing.
+    const fw::Image black(srt->width, srt->height, fw::Rgba8{0, 0, 0, 255});
+    CHECK(grading::matching_checkpoint_sentence(lab, checkpoint("trs"), black, fw::CompareOptions{},
+                                                references)
+              .empty());
+    const fw::Image small(8, 8, fw::Rgba8{0, 0, 0, 255});
+    CHECK(grading::matching_checkpoint_sentence(lab, checkpoint("trs"), small, fw::CompareOptions{},
+                                                references)
+              .empty());
+    // Its own expected image is not "another" checkpoint's.
+    CHECK(grading::matching_checkpoint_sentence(lab, checkpoint("srt"), *srt, fw::CompareOptions{},
+                                                references)
+              .find("checkpoint srt") == std::string::npos);
 }
 
 TEST_CASE("junit.xml has a test case per checkpoint and escapes what the checks printed") {

@@ -3,7 +3,10 @@
 // and graded on its lab. Each must lose points on a check of a visible
 // checkpoint that the solution passes, so a student sees it before the
 // deadline; a mistake in a unit-checked function that names its kind
-// ("named") must be named in the grader's output: "Likely mistake (ID)".
+// ("named") must be named in the grader's output: "Likely mistake (ID)", or,
+// for "frame:NAME", "Your frame is the one checkpoint NAME expects" (a frame
+// that is another checkpoint's expected image). The table counts, besides,
+// the caught mistakes the grader diagnoses at all, whether named or not.
 //
 // The list, kMistakesJson in mistakes.hpp: {"mistakes": [{"id", "lab"
 // (folder, NN_name), "file" (repository path), "find" (exact text: once in
@@ -24,6 +27,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -52,6 +56,19 @@ const std::set<std::string> kNamedIds = {
     "degrees-for-radians", "flipped-angle", "translation-in-bottom-row", "not-normalised"};
 
 constexpr size_t kMinMistakes = 40, kMinPerLab = 4;
+constexpr const char* kFramePrefix = "frame:";
+
+// What the grader's output says for the named mistake `named`.
+std::string named_sentence(const std::string& named) {
+    if (named.rfind(kFramePrefix, 0) == 0)
+        return "Your frame is the one checkpoint " + named.substr(std::strlen(kFramePrefix)) +
+               " expects";
+    return "Likely mistake (" + named + ")";
+}
+
+// The sentences with which the grader diagnoses a failed check.
+const char* const kDiagnoses[] = {"Likely mistake (", "Your frame is the one checkpoint",
+                                  "Your function returned"};
 
 struct Mistake {
     std::string id, lab, file, find, replace, why, named;
@@ -85,7 +102,8 @@ std::string stale(const Mistake& m, const fs::path& source, const std::vector<st
     if (m.id.empty() || m.why.empty()) return "an id and a why are required";
     if (!std::count(labs.begin(), labs.end(), m.lab)) return "no lab folder labs/" + m.lab;
     if (lab_of(m.file) != m.lab) return m.file + " is not a file of lab " + m.lab;
-    if (!m.named.empty() && !kNamedIds.count(m.named)) return "unknown named ID " + m.named;
+    if (!m.named.empty() && !kNamedIds.count(m.named) && m.named.rfind(kFramePrefix, 0) != 0)
+        return "unknown named ID " + m.named;
     if (m.find.empty() || m.find == m.replace) return "find is empty or equal to replace";
     if (!fs::is_regular_file(source / m.file)) return m.file + " does not exist";
     const std::string text = read_text(source / m.file);
@@ -119,10 +137,19 @@ std::string points_text(double p) {
 // Whether some entry of `lab` (its id, as results.json names it) in `g`
 // says "Likely mistake (ID)".
 bool names_mistake(const Grade& g, const std::string& lab, const std::string& id) {
-    const std::string needle = "Likely mistake (" + id + ")";
+    const std::string needle = named_sentence(id);
     for (const auto& [name, e] : g.entries)
         if (name.rfind(lab + " / ", 0) == 0 && e.output.find(needle) != std::string::npos)
             return true;
+    return false;
+}
+
+// Whether some entry of `lab` in `g` carries a diagnosis (kDiagnoses).
+bool diagnosed(const Grade& g, const std::string& lab) {
+    for (const auto& [name, e] : g.entries)
+        if (name.rfind(lab + " / ", 0) == 0)
+            for (const char* d : kDiagnoses)
+                if (e.output.find(d) != std::string::npos) return true;
     return false;
 }
 
@@ -134,7 +161,7 @@ std::string lab_id(const std::string& dir) {
 }
 
 struct LabTally {
-    size_t mistakes = 0, caught = 0, named = 0, named_found = 0;
+    size_t mistakes = 0, caught = 0, named = 0, named_found = 0, diagnosed = 0;
     double points = 0.0;
 };
 
@@ -213,7 +240,7 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
 
         std::string result;
         double lost = 0.0;
-        bool caught = false, named_found = false;
+        bool caught = false, named_found = false, diagnosis = false;
         if (!shader && !rebuild_tree(tree, "lab")) {
             result = "DOES NOT BUILD";
         } else {
@@ -238,6 +265,7 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
                 result = hidden ? "SLIPPED: only " + std::to_string(hidden) + " hidden entries lose"
                                 : "SLIPPED: full marks";
             if (caught && !m.named.empty()) named_found = names_mistake(g, lab_id(m.lab), m.named);
+            diagnosis = caught && diagnosed(g, lab_id(m.lab));
             for (const auto& [id, status] : g.status)
                 if (status != "ok") result += " [" + id + ": " + status + "]";
         }
@@ -246,11 +274,14 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         LabTally& t = tally[m.lab];
         ++t.mistakes;
         t.caught += caught;
+        t.diagnosed += diagnosis;
         t.points += lost;
         if (!m.named.empty()) {
             ++t.named;
             t.named_found += named_found;
             result += named_found ? "; named " + m.named : "; NOT named " + m.named;
+        } else if (diagnosis) {
+            result += "; diagnosed";
         }
         char line[1024];
         std::snprintf(line, sizeof line, "%-34s %-18s %s (%.1f s)\n", m.id.c_str(), m.lab.c_str(),
@@ -261,30 +292,33 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         CHECK_MESSAGE(caught, m.id << " (" << m.why << "): " << result
                                    << "; add a visible checkpoint or probe that it fails");
         if (!m.named.empty() && !skip_named)
-            CHECK_MESSAGE(named_found, m.id << ": no check of lab " << m.lab
-                                            << " says \"Likely mistake (" << m.named << ")\"");
+            CHECK_MESSAGE(named_found, m.id << ": no check of lab " << m.lab << " says \""
+                                            << named_sentence(m.named) << "\"");
     }
 
     // The table: per lab, the mistakes tried, those caught by a visible
-    // check, the visible points they lost in all and the named ones found.
+    // check, the visible points they lost in all, the named ones found and
+    // the caught ones the grader diagnoses (a named mistake, a frame that is
+    // another checkpoint's, a NaN: image-only mistakes included).
     char line[256];
     std::string table;
-    std::snprintf(line, sizeof line, "%-18s %8s %6s %11s %6s\n", "lab", "mistakes", "caught",
-                  "points lost", "named");
+    std::snprintf(line, sizeof line, "%-18s %8s %6s %11s %6s %9s\n", "lab", "mistakes", "caught",
+                  "points lost", "named", "diagnosed");
     table += line;
     LabTally sum;
-    for (const auto& [l, t] : tally) {
-        std::snprintf(line, sizeof line, "%-18s %8zu %6zu %11s %6s\n", l.c_str(), t.mistakes,
+    auto row = [&](const std::string& name, const LabTally& t) {
+        std::snprintf(line, sizeof line, "%-18s %8zu %6zu %11s %6s %9s\n", name.c_str(), t.mistakes,
                       t.caught, points_text(t.points).c_str(),
-                      (std::to_string(t.named_found) + "/" + std::to_string(t.named)).c_str());
+                      (std::to_string(t.named_found) + "/" + std::to_string(t.named)).c_str(),
+                      (std::to_string(t.diagnosed) + "/" + std::to_string(t.caught)).c_str());
         table += line;
+    };
+    for (const auto& [l, t] : tally) {
+        row(l, t);
         sum.mistakes += t.mistakes, sum.caught += t.caught, sum.points += t.points;
-        sum.named += t.named, sum.named_found += t.named_found;
+        sum.named += t.named, sum.named_found += t.named_found, sum.diagnosed += t.diagnosed;
     }
-    std::snprintf(line, sizeof line, "%-18s %8zu %6zu %11s %6s\n", "total", sum.mistakes,
-                  sum.caught, points_text(sum.points).c_str(),
-                  (std::to_string(sum.named_found) + "/" + std::to_string(sum.named)).c_str());
-    table += line;
+    row("total", sum);
     std::printf("\n%s%s", report.c_str(), table.c_str());
     MESSAGE("mistakes, each alone on the solution:\n"
             << report << "\n"

@@ -1,0 +1,148 @@
+#include "grading/judge/image_matches.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <vector>
+
+#include "framework/error.hpp"
+#include "framework/text.hpp"
+
+namespace grading {
+
+namespace {
+
+constexpr int kGrid = 16;
+// Two images whose block averages differ by more than this (0-255) somewhere
+// cannot pass a comparison at a tolerance of a few levels with 0.1% of
+// pixels failing; the full comparison runs only below it.
+constexpr float kSummaryGap = 24.0f;
+
+bool close_summaries(const ReferenceImages::Summary& a, const ReferenceImages::Summary& b) {
+    if (a.width != b.width || a.height != b.height || a.cells.size() != b.cells.size())
+        return false;
+    for (size_t i = 0; i < a.cells.size(); ++i)
+        if (std::fabs(a.cells[i] - b.cells[i]) > kSummaryGap) return false;
+    return true;
+}
+
+bool has_image_check(const LabData& lab, size_t k) {
+    for (const Check& check : lab.checks.at(k))
+        if (check.kind == CheckKind::Image) return true;
+    return false;
+}
+
+std::string value_text(const nlohmann::json* value) {
+    if (!value) return "its default";
+    if (value->is_number_float()) return fw::number_text(value->get<double>(), 6);
+    return value->dump();
+}
+
+// The checkpoint's value of parameter `name`, or null for the lab's default.
+const nlohmann::json* param(const fw::Checkpoint& checkpoint, const std::string& name) {
+    return checkpoint.params.contains(name) ? &checkpoint.params.at(name) : nullptr;
+}
+
+// The names of the parameters whose values differ.
+std::vector<std::string> differences(const fw::Checkpoint& here, const fw::Checkpoint& there) {
+    std::set<std::string> names;
+    for (const auto& [name, value] : here.params.items()) names.insert(name);
+    for (const auto& [name, value] : there.params.items()) names.insert(name);
+    std::vector<std::string> out;
+    for (const std::string& name : names) {
+        const nlohmann::json *a = param(here, name), *b = param(there, name);
+        if (!(a && b && *a == *b)) out.push_back(name);
+    }
+    return out;
+}
+
+}  // namespace
+
+ReferenceImages::Summary ReferenceImages::summarise(const fw::Image& image) {
+    Summary s;
+    s.width = image.width;
+    s.height = image.height;
+    s.cells.assign(static_cast<size_t>(kGrid * kGrid * 3), 0.0f);
+    std::vector<int> counts(kGrid * kGrid, 0);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const int cell = (y * kGrid / std::max(1, image.height)) * kGrid +
+                             x * kGrid / std::max(1, image.width);
+            const fw::Rgba8& p = image.at(x, y);
+            s.cells[cell * 3 + 0] += p.r;
+            s.cells[cell * 3 + 1] += p.g;
+            s.cells[cell * 3 + 2] += p.b;
+            ++counts[cell];
+        }
+    for (int cell = 0; cell < kGrid * kGrid; ++cell)
+        for (int c = 0; c < 3; ++c)
+            if (counts[cell]) s.cells[cell * 3 + c] /= static_cast<float>(counts[cell]);
+    return s;
+}
+
+const ReferenceImages::Entry& ReferenceImages::entry(const std::string& checkpoint) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        auto found = entries_.find(checkpoint);
+        if (found != entries_.end()) return *found->second;
+    }
+    // Decoded outside the lock, so threads decode different images at once;
+    // two threads may decode the same one, and the first stored wins.
+    auto made = std::make_unique<Entry>();
+    const std::string path = lab_.root + "/" + lab_.reference(checkpoint);
+    if (std::filesystem::exists(path)) {
+        try {
+            made->image = std::make_unique<fw::Image>(fw::read_png(path));
+            made->summary = summarise(*made->image);
+        } catch (const fw::Error&) {
+            made->image.reset();  // the check of its own checkpoint says why
+        }
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    return *entries_.emplace(checkpoint, std::move(made)).first->second;
+}
+
+const fw::Image* ReferenceImages::get(const std::string& checkpoint) {
+    return entry(checkpoint).image.get();
+}
+
+const ReferenceImages::Summary* ReferenceImages::summary(const std::string& checkpoint) {
+    const Entry& e = entry(checkpoint);
+    return e.image ? &e.summary : nullptr;
+}
+
+std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                         const fw::Image& frame, const fw::CompareOptions& options,
+                                         ReferenceImages& references) {
+    const ReferenceImages::Summary mine = ReferenceImages::summarise(frame);
+    const std::vector<fw::Checkpoint>& all = lab.file.checkpoints;
+    for (size_t k = 0; k < all.size(); ++k) {
+        const fw::Checkpoint& other = all[k];
+        if (other.name == checkpoint.name || !has_image_check(lab, k)) continue;
+        const ReferenceImages::Summary* theirs = references.summary(other.name);
+        if (!theirs || !close_summaries(mine, *theirs)) continue;
+        const fw::Image* reference = references.get(other.name);
+        if (!reference || !fw::compare_images(frame, *reference, options).passed) continue;
+        const std::vector<std::string> differ = differences(checkpoint, other);
+        const std::string text = "Your frame is the one checkpoint " + other.name + " expects";
+        if (differ.empty())
+            return text + " (" + other.description + "): compare what the two checkpoints ask.";
+        if (differ.size() == 1) {
+            const std::string& name = differ.front();
+            const std::string here = value_text(param(checkpoint, name)),
+                              there = value_text(param(other, name));
+            return text + " (" + name + " " + there + ", here " + here +
+                   "): your code most likely treats " + name + " " + here + " as " + there + ".";
+        }
+        std::vector<std::string> pairs;
+        for (const std::string& name : differ)
+            pairs.push_back(name + " " + value_text(param(other, name)) + " there, " +
+                            value_text(param(checkpoint, name)) + " here");
+        return text + ", which differs from " + checkpoint.name + " in " + fw::join(pairs, "; ") +
+               ": your code most likely mixes these parameters up or ignores them.";
+    }
+    return "";
+}
+
+}  // namespace grading

@@ -1,0 +1,59 @@
+// A failed frame recognised: when a checkpoint's frame fails its image check
+// but passes another checkpoint's (the same comparison, against that
+// checkpoint's reference), the student's code most likely does for this
+// checkpoint what it should do for the other one: lab 1's `trs` drawn in the
+// order of `srt`, a camera that ignores `fov`. The report says so in one
+// sentence, with the parameters in which the two checkpoints differ.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "framework/checkpoints.hpp"
+#include "framework/image.hpp"
+#include "grading/judge/checks.hpp"
+
+namespace grading {
+
+// A lab's reference images, each decoded once however many checks read it,
+// from any thread. Also keeps a coarse summary of each (block averages) that
+// rules most pairs out without a full comparison.
+class ReferenceImages {
+public:
+    explicit ReferenceImages(const LabData& lab) : lab_(lab) {}
+    // The checkpoint's reference, or null when it has none (a student's copy
+    // has no reference of a hidden checkpoint) or it cannot be read.
+    const fw::Image* get(const std::string& checkpoint);
+
+    // Block averages of an image: a 16 x 16 grid, each cell's mean per
+    // channel (0-255).
+    struct Summary {
+        int width = 0, height = 0;
+        std::vector<float> cells;
+    };
+    static Summary summarise(const fw::Image& image);
+    const Summary* summary(const std::string& checkpoint);
+
+private:
+    struct Entry {
+        std::unique_ptr<fw::Image> image;  // null when missing or unreadable
+        Summary summary;
+    };
+    const Entry& entry(const std::string& checkpoint);
+
+    const LabData& lab_;
+    std::mutex mutex_;
+    std::map<std::string, std::unique_ptr<Entry>> entries_;
+};
+
+// The sentence for a frame of `checkpoint` that fails its own reference
+// under `options`: the first other checkpoint of the lab with an image check
+// whose reference the frame matches under the same options, named with the
+// parameters in which the two differ; empty when none matches.
+std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                         const fw::Image& frame, const fw::CompareOptions& options,
+                                         ReferenceImages& references);
+
+}  // namespace grading
