@@ -92,4 +92,28 @@ std::optional<json> translation_in_bottom_row(const json& m) {
     return to_json(b);
 }
 
+std::optional<json> rows_negated(const json& m, int rows, bool with_last) {
+    std::optional<Columns> a = square_matrix(m);
+    if (!a || a->size() < 3) return std::nullopt;
+    const size_t last = a->size() - 1;
+    Columns b = *a;
+    for (size_t r = 0; r < last; ++r) {
+        if (!(rows & (1 << r))) continue;
+        for (size_t c = 0; c < (with_last ? last + 1 : last); ++c) b[c][r] = -b[c][r];
+    }
+    return to_json(b);
+}
+
+std::optional<json> diagonal_in_last_column(const json& m) {
+    std::optional<Columns> a = square_matrix(m);
+    if (!a || a->size() < 3) return std::nullopt;
+    const size_t last = a->size() - 1;
+    Columns b = *a;
+    for (size_t r = 0; r < last; ++r) {
+        b[last][r] = (*a)[r][r];
+        b[r][r] = 1.0;
+    }
+    return to_json(b);
+}
+
 }  // namespace grading

@@ -79,10 +79,10 @@ struct Checker {
         return value && !results_match(expected, *value, tolerance, nullptr) &&
                close(observed, *value, tolerance, slack);
     }
-    void add(Mistake m, int argument) {
+    void add(Mistake m, int argument, int rows = 0) {
         for (const Explanation& e : found)
             if (e.mistake == m) return;
-        found.push_back({m, k, argument});
+        found.push_back({m, k, argument, rows});
     }
     void consider(Mistake m, const std::optional<json>& value, int argument = -1) {
         if (matches(value)) add(m, argument);
@@ -129,6 +129,8 @@ struct Checker {
             consider(Mistake::Transpose, transposed(expected));
             consider(Mistake::Inverse, inverted(expected));
             consider(Mistake::TranslationInBottomRow, translation_in_bottom_row(expected));
+            consider(Mistake::LastColumnForDiagonal, diagonal_in_last_column(expected));
+            flipped_rows(s.rows);
         }
         if (s.kind == ValueShape::Kind::Vector) unnormalised_vector();
         std::vector<int> degrees;
@@ -143,6 +145,15 @@ struct Checker {
         }
         for (const Alternative& a : ref.alternatives)
             consider(a.mistake, call(a.function, args, k));
+    }
+
+    // Some rows above the bottom one negated, with or without their last
+    // entry: a basis vector the matrix is built from points the wrong way.
+    void flipped_rows(int n) {
+        for (int rows = 1; rows < (1 << (n - 1)); ++rows)
+            for (bool with_last : {true, false})
+                if (matches(rows_negated(expected, rows, with_last)))
+                    return add(Mistake::FlippedAxis, -1, rows);
     }
 
     // A unit vector expected, a longer or shorter one observed in its direction.
@@ -197,6 +208,12 @@ std::string_view mistake_id(Mistake mistake) {
             return "flipped-angle";
         case Mistake::TranslationInBottomRow:
             return "translation-in-bottom-row";
+        case Mistake::FlippedAxis:
+            return "flipped-axis";
+        case Mistake::LastColumnForDiagonal:
+            return "last-column-for-diagonal";
+        case Mistake::LengthSquared:
+            return "length-squared";
         case Mistake::NotNormalised:
             return "not-normalised";
     }
@@ -228,7 +245,7 @@ Recognised recognise_mistakes(const ReferenceUnit& ref, const std::vector<UnitFa
     const size_t n = std::min(failures.size(), kMistakeCases);
     struct Tally {
         std::set<size_t> cases;
-        std::map<int, int> elements, arguments;
+        std::map<int, int> elements, arguments, rows;
     };
     std::map<Mistake, Tally> tallies;
     for (size_t i = 0; i < n; ++i) {
@@ -237,6 +254,7 @@ Recognised recognise_mistakes(const ReferenceUnit& ref, const std::vector<UnitFa
             t.cases.insert(i);
             ++t.elements[e.element];
             ++t.arguments[e.argument];
+            ++t.rows[e.rows];
         }
     }
     auto most = [](const std::map<int, int>& votes) {
@@ -249,7 +267,8 @@ Recognised recognise_mistakes(const ReferenceUnit& ref, const std::vector<UnitFa
     bool same = true;
     for (const auto& [mistake, tally] : tallies) {
         if (2 * tally.cases.size() <= n) continue;
-        out.mistakes.push_back({mistake, most(tally.elements), most(tally.arguments)});
+        out.mistakes.push_back(
+            {mistake, most(tally.elements), most(tally.arguments), most(tally.rows)});
         if (first && *first != tally.cases) same = false;
         if (!first) first = &tally.cases;
     }
@@ -297,6 +316,15 @@ const char* plain_cause(Mistake m) {
                    "the other way, or for a view matrix the camera's placement in the world "
                    "instead of the world seen from the camera); check the signs and which "
                    "way your matrix maps points";
+        case Mistake::LastColumnForDiagonal:
+            return " has the diagonal's entries in the last column: a scale's factors sit on "
+                   "the diagonal (m[0][0], m[1][1], m[2][2] in GLM), while the last column is "
+                   "where a translation goes; put each factor on the diagonal and leave the "
+                   "last column (0, 0, 0, 1)";
+        case Mistake::LengthSquared:
+            return " is the expected one with a direction divided by its length squared "
+                   "(dot(v, v)) instead of its length: normalising divides by "
+                   "sqrt(dot(v, v)), or use glm::normalize; check the division";
         case Mistake::ReversedProduct:
             return " is the product of the right matrices in reverse order: with column "
                    "vectors (p' = M p) the matrix next to the point acts first, so A * B "
@@ -342,6 +370,25 @@ std::string translation_cause(int n) {
            "1); put the translation into the last column";
 }
 
+// "row 1", "rows 1 and 3" (counted from 1, as the report's rows are).
+std::string rows_words(int rows) {
+    std::vector<std::string> names;
+    for (int r = 0; r < 31; ++r)
+        if (rows & (1 << r)) names.push_back(std::to_string(r + 1));
+    std::string text = names.size() == 1 ? "row " : "rows ";
+    for (size_t i = 0; i < names.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return text;
+}
+
+std::string flipped_axis_cause(int rows) {
+    return " is the expected one with " + rows_words(rows) +
+           " negated: a basis vector the matrix is built from points the wrong way (a camera "
+           "looks down its -z axis, so w = normalize(eye - target), not target - eye, and "
+           "u = up x w follows w); check the direction of the vector in " +
+           (rows & (rows - 1) ? "those rows" : "that row") + " and of those built from it";
+}
+
 std::string normalisation_cause(bool matrix) {
     return matrix ? " is the expected one computed with a direction left unnormalised (a "
                     "rotation axis or a camera basis vector not of length 1); normalise each "
@@ -360,6 +407,8 @@ std::string likely_mistake(const ReferenceUnit& ref, const Explanation& e) {
         sentence += " is the expected one for " + angle_words(ref, e) + angle;
     else if (e.mistake == Mistake::TranslationInBottomRow)
         sentence += translation_cause(ref.shape.columns);
+    else if (e.mistake == Mistake::FlippedAxis)
+        sentence += flipped_axis_cause(e.rows);
     else
         sentence += normalisation_cause(ref.shape.kind == ValueShape::Kind::Matrix);
     return "Likely mistake (" + std::string(mistake_id(e.mistake)) + "): " + sentence + ".";

@@ -22,7 +22,8 @@ namespace grading {
 // The mistake's stable name, as the report prints it: "transpose",
 // "inverse", "reversed-product", "radians-for-degrees",
 // "degrees-for-radians", "flipped-angle", "translation-in-bottom-row",
-// "not-normalised".
+// "not-normalised", "flipped-axis", "last-column-for-diagonal",
+// "length-squared".
 std::string_view mistake_id(Mistake mistake);
 
 // One failing case of a unit check.
@@ -37,6 +38,7 @@ struct Explanation {
     Mistake mistake = Mistake::Transpose;
     int element = -1;   // a list result's first element that differs; -1: not a list
     int argument = -1;  // an angle mistake's argument (from 0); -1: every angle argument
+    int rows = 0;       // FlippedAxis: bit r set for each row r negated
 };
 
 // The mistakes that explain one case: for each, a value course computes
@@ -79,5 +81,11 @@ std::optional<nlohmann::json> inverted(const nlohmann::json& m);
 // first entries (where a matrix typed for row vectors keeps its translation),
 // the last column left (0, ..., 0, corner). For 3x3 and larger.
 std::optional<nlohmann::json> translation_in_bottom_row(const nlohmann::json& m);
+// The rows in `rows` (bit r for row r, above the bottom row) negated: whole
+// (`with_last`) or all but their last entry. For 3x3 and larger.
+std::optional<nlohmann::json> rows_negated(const nlohmann::json& m, int rows, bool with_last);
+// The diagonal entries above the corner moved into the last column (row r's
+// to m[n-1][r]), the diagonal left 1: a scale typed as a translation.
+std::optional<nlohmann::json> diagonal_in_last_column(const nlohmann::json& m);
 
 }  // namespace grading

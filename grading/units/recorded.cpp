@@ -29,7 +29,10 @@ constexpr Mistake kMistakes[] = {Mistake::Transpose,
                                  Mistake::DegreesForRadians,
                                  Mistake::FlippedAngle,
                                  Mistake::TranslationInBottomRow,
-                                 Mistake::NotNormalised};
+                                 Mistake::NotNormalised,
+                                 Mistake::FlippedAxis,
+                                 Mistake::LastColumnForDiagonal,
+                                 Mistake::LengthSquared};
 
 // A result that differs from `expected` everywhere (numbers become NaN,
 // which matches nothing), or only in element `k` of a list.

@@ -27,6 +27,8 @@
 //     product(s) in the other order (several may be given);
 //   - grading::not_normalised(&fn): fn computes it without normalising a
 //     direction the function must normalise;
+//   - grading::length_squared(&fn): fn divides that direction by its length
+//     squared instead of its length;
 //   - grading::element_names({"a", "b", ...}): names for the elements of a
 //     std::vector result, for the report (an aggregate's fields are named
 //     by the lab's fw::FieldsOf, units.hpp);
@@ -146,6 +148,9 @@ enum class Mistake {
     FlippedAngle,            // "flipped-angle"
     TranslationInBottomRow,  // "translation-in-bottom-row"
     NotNormalised,           // "not-normalised"
+    FlippedAxis,             // "flipped-axis": a basis vector (rows of the matrix) negated
+    LastColumnForDiagonal,   // "last-column-for-diagonal": diagonal entries put in the last column
+    LengthSquared,           // "length-squared": divided by a length squared, not the length
 };
 
 // What the function returns when written with one mistake, computed by
@@ -163,6 +168,11 @@ Alternative reversed_product(R (*fn)(A...)) {
 template <class R, class... A>
 Alternative not_normalised(R (*fn)(A...)) {
     return {Mistake::NotNormalised, fw::unit_function("not normalised", fn),
+            ShapeOf<std::decay_t<R>>::get()};
+}
+template <class R, class... A>
+Alternative length_squared(R (*fn)(A...)) {
+    return {Mistake::LengthSquared, fw::unit_function("length squared", fn),
             ShapeOf<std::decay_t<R>>::get()};
 }
 

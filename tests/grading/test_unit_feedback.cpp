@@ -220,6 +220,9 @@ TEST_CASE("mistake IDs are the stable names the reports print") {
     CHECK(grading::mistake_id(Mistake::FlippedAngle) == "flipped-angle");
     CHECK(grading::mistake_id(Mistake::TranslationInBottomRow) == "translation-in-bottom-row");
     CHECK(grading::mistake_id(Mistake::NotNormalised) == "not-normalised");
+    CHECK(grading::mistake_id(Mistake::FlippedAxis) == "flipped-axis");
+    CHECK(grading::mistake_id(Mistake::LastColumnForDiagonal) == "last-column-for-diagonal");
+    CHECK(grading::mistake_id(Mistake::LengthSquared) == "length-squared");
 }
 
 TEST_CASE("each mistake is recognised against the labs' references") {
@@ -299,6 +302,41 @@ TEST_CASE("each mistake is recognised against the labs' references") {
         CHECK(named("projection", "lookAt", 1e-4, [](const json& a, const json&) {
                   return unnormalised_view(a);
               }) == Ids{"not-normalised"});
+    }
+    SUBCASE("flipped-axis: lookAt's w pointing at the target") {
+        const ReferenceUnit& ref = reference("projection", "lookAt");
+        const auto cases = failures(ref, 1e-4, [](const json& a, const json&) {
+            // w = target - eye: u = up x w turns too, v = w x u does not.
+            const glm::vec3 eye = vec(a[0]), target = vec(a[1]), up = vec(a[2]);
+            const glm::vec3 w = glm::normalize(target - eye);
+            const glm::vec3 u = glm::normalize(glm::cross(up, w)), v = glm::cross(w, u);
+            glm::mat4 m(1.0f);
+            for (int c = 0; c < 3; ++c) m[c][0] = u[c], m[c][1] = v[c], m[c][2] = w[c];
+            m[3][0] = -glm::dot(u, eye), m[3][1] = -glm::dot(v, eye), m[3][2] = -glm::dot(w, eye);
+            return js(m);
+        });
+        REQUIRE(cases.size() > 40);
+        const grading::Recognised r = grading::recognise_mistakes(ref, cases, 1e-4);
+        REQUIRE(r.mistakes.size() == 1);
+        CHECK(r.mistakes[0].mistake == grading::Mistake::FlippedAxis);
+        const std::string line = grading::likely_mistake(ref, r.mistakes[0]);
+        CHECK(line.rfind("Likely mistake (flipped-axis): your matrix is the expected one with rows "
+                         "1 and 3 negated",
+                         0) == 0);
+    }
+    SUBCASE("last-column-for-diagonal: scale typed as a translation") {
+        CHECK(named("transforms", "scale", 1e-5, [](const json& a, const json&) {
+                  return js(glm::translate(kI, vec(a[0])));
+              }) == Ids{"last-column-for-diagonal"});
+    }
+    SUBCASE("length-squared: rotate's axis divided by dot(axis, axis)") {
+        CHECK(named("transforms", "rotate", 1e-5, [](const json& a, const json&) {
+                  const glm::vec3 axis = vec(a[1]);
+                  json b = a;
+                  const glm::vec3 shorter = axis / glm::dot(axis, axis);
+                  b[1] = json::array({shorter.x, shorter.y, shorter.z});
+                  return unnormalised_rotation(b);
+              }) == Ids{"length-squared"});
     }
     SUBCASE("not-normalised: a vector result of another length in the right direction") {
         const ReferenceUnit ref =

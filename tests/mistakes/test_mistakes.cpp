@@ -51,9 +51,17 @@ using namespace tree_test;
 namespace {
 
 // The kinds of mistake the grader names for a failing unit check.
-const std::set<std::string> kNamedIds = {
-    "transpose",           "inverse",       "reversed-product",          "radians-for-degrees",
-    "degrees-for-radians", "flipped-angle", "translation-in-bottom-row", "not-normalised"};
+const std::set<std::string> kNamedIds = {"transpose",
+                                         "inverse",
+                                         "reversed-product",
+                                         "radians-for-degrees",
+                                         "degrees-for-radians",
+                                         "flipped-angle",
+                                         "translation-in-bottom-row",
+                                         "not-normalised",
+                                         "flipped-axis",
+                                         "last-column-for-diagonal",
+                                         "length-squared"};
 
 constexpr size_t kMinMistakes = 40, kMinPerLab = 4;
 constexpr const char* kFramePrefix = "frame:";

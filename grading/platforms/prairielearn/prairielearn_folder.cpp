@@ -8,7 +8,7 @@
 // - serverFilesCourse/gl-labs/: for the course's private repository: grade.sh
 //   (grading/platforms/prairielearn/), the entrypoint, and every lab's checkpoints file
 //   and references, hidden ones included, which `course autograde` grades
-//   with, and each lab's unit cases (labs/NN_name/grading/cases.json,
+//   with, and each lab's unit cases (cases.json in its grading folder,
 //   recorded for the autograder, hidden checks too, from a fresh seed): the
 //   image's `course` has no references to draw them from;
 // - README.md: how to build the image, and each lab's question files.
@@ -44,7 +44,7 @@ struct Plan {
     StudentFiles students;
     std::vector<LabData> labs;
     std::vector<std::string> data;  // labs/*/checkpoints.json and labs/*/reference/*
-    std::vector<std::pair<std::string, std::string>> cases;  // labs/*/grading/cases.json -> text
+    std::vector<std::pair<std::string, std::string>> cases;  // each lab's cases.json -> text
     unsigned seed = 0;                                       // the cases' seed
 };
 

@@ -1,7 +1,7 @@
 // Lab 1 `transforms`: course's references for the student's matrices, from
-// GLM's own transform helpers (never the lab's code), and what two usual
-// mistakes give, for the report to name them: an axis left unnormalised,
-// the product in reverse order.
+// GLM's own transform helpers (never the lab's code), and what three usual
+// mistakes give, for the report to name them: an axis left unnormalised or
+// divided by its length squared, the product in reverse order.
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -40,6 +40,13 @@ glm::mat4 ref_rotate_unnormalised(float degrees, glm::vec3 a) {
     return glm::mat4(c * glm::mat3(1.0f) + (1.0f - c) * glm::outerProduct(a, a) + s * K);
 }
 
+// Rodrigues' formula with the axis divided by its length squared: what
+// rotate() gives when it divides by dot(axis, axis) to normalise.
+glm::mat4 ref_rotate_length_squared(float degrees, glm::vec3 axis) {
+    if (axis == glm::vec3(0.0f)) return kIdentity;
+    return ref_rotate_unnormalised(degrees, axis / glm::dot(axis, axis));
+}
+
 // "compose" takes the order by its name (transforms_math.hpp lists the names
 // of the lab's `order` parameter; course uses the names, not the lab's code).
 // M is the product left to right (`reversed`: right to left).
@@ -72,7 +79,8 @@ COURSE_REFERENCE(rotateX, &ref_rotate_x, {grading::degrees(-720, 720)})
 COURSE_REFERENCE(rotateY, &ref_rotate_y, {grading::degrees(-720, 720)})
 COURSE_REFERENCE(rotateZ, &ref_rotate_z, {grading::degrees(-720, 720)})
 COURSE_REFERENCE(rotate, &ref_rotate, {grading::degrees(-720, 720), grading::vec(3, -10, 10)},
-                 grading::not_normalised(&ref_rotate_unnormalised))
+                 grading::not_normalised(&ref_rotate_unnormalised),
+                 grading::length_squared(&ref_rotate_length_squared))
 COURSE_REFERENCE(compose, &ref_compose,
                  {grading::scalar(-2, 2), grading::scalar(-2, 2), grading::degrees(-360, 360),
                   grading::scalar(-3, 3), grading::scalar(-3, 3),
