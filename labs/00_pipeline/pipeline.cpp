@@ -13,7 +13,9 @@
 // set_depth_test() and set_culling() below, expand_indices() in meshes.cpp,
 // and the pass-through in shaders/00_pipeline/pipeline.vert.
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "framework/gl.hpp"
@@ -189,11 +191,30 @@ public:
         glBindVertexArray(0);
     }
 
-    // scene=indexed: the bytes each storage needs, e.g. {"storage": "indexed",
-    // "vertex_bytes": 144, "index_bytes": 48, "total_bytes": 192, "indexed":
-    // {...}, "flat": {...}}.
+    // Every scene: "layout", the vertex layout as GL holds it in the quads'
+    // vertex array (describe_vertex_layout() made it), read back attribute by
+    // attribute: {"position": {"enabled": 1, "size": 3, "stride": 24,
+    // "offset": 0}, "color": {...}}. scene=indexed adds the bytes each
+    // storage needs, e.g. {"storage": "indexed", "vertex_bytes": 144,
+    // "index_bytes": 48, "total_bytes": 192, "indexed": {...}, "flat": {...}}.
     nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
-        if (p[kScene] != Scene::Indexed) return nlohmann::json::object();
+        nlohmann::json layout;
+        glBindVertexArray(quads_.id());
+        for (const auto& [name, location] :
+             {std::pair<const char*, GLuint>{"position", A_POSITION}, {"color", A_COLOR}}) {
+            GLint enabled = 0, size = 0, stride = 0;
+            void* offset = nullptr;
+            glGetVertexAttribiv(location, GL_VERTEX_ATTRIB_ARRAY_ENABLED, &enabled);
+            glGetVertexAttribiv(location, GL_VERTEX_ATTRIB_ARRAY_SIZE, &size);
+            glGetVertexAttribiv(location, GL_VERTEX_ATTRIB_ARRAY_STRIDE, &stride);
+            glGetVertexAttribPointerv(location, GL_VERTEX_ATTRIB_ARRAY_POINTER, &offset);
+            layout[name] = {{"enabled", enabled},
+                            {"size", size},
+                            {"stride", stride},
+                            {"offset", reinterpret_cast<std::uintptr_t>(offset)}};
+        }
+        glBindVertexArray(0);
+        if (p[kScene] != Scene::Indexed) return {{"layout", layout}};
         auto bytes = [](std::size_t vertex_bytes, std::size_t index_bytes) {
             return nlohmann::json{{"vertex_bytes", vertex_bytes},
                                   {"index_bytes", index_bytes},
@@ -205,6 +226,7 @@ public:
         out[kStorage.name] = p.text(kStorage.name);
         out["indexed"] = indexed;
         out["flat"] = flat;
+        out["layout"] = layout;
         return out;
     }
 

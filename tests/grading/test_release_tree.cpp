@@ -1,19 +1,26 @@
 // `course release` end to end, on this repository:
 // - the student tree holds no marker, no hidden checkpoint and none of the
 //   staff's files (tests, references, CI), builds, runs every lab without a
-//   crash, scores below full marks, and its own self-checks fail;
+//   crash, scores below full marks, and its own self-checks fail there and
+//   pass with the solution's files put in;
 // - every solution block is graded before the deadline: with that block
 //   alone in its student version, some check of a visible checkpoint that
 //   passes with the solution fails (hidden checkpoints test the same code
-//   with other parameters).
+//   with other parameters);
+// - every part is checkable in the sheet's order: from a lab's starting
+//   code, writing its parts one by one in the order of the sheet's "What you
+//   implement" list raises the lab's visible score at every part.
 // Both build trees of their own (minutes); CMake registers them as separate
 // tests (tests/grading/CMakeLists.txt).
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "framework/checkpoints.hpp"
@@ -131,6 +138,24 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
     MESSAGE("student version: " << score << " of " << max_score << " points");
     CHECK(max_score > 0);
     CHECK(score < max_score);
+
+    // Its self-checks are green on the solution: the staff's versions of the files students
+    // edit, put in their place.
+    size_t solved = 0;
+    for (const std::string& file : grading::project_files(source.string()))
+        if (grading::is_marked_source(file) && !grading::is_staff_only(file) &&
+            fs::is_regular_file(source / file) &&
+            !grading::solution_blocks(read_text(source / file), file).empty()) {
+            write_text(student / file, read_text(source / file));
+            ++solved;
+        }
+    CHECK(solved > 0);
+    REQUIRE(rebuild_tree(student, "lab course"));
+    const auto solution = run("ctest --test-dir " + shell_quote((student / "build").string()) +
+                                  " -L self-check -j " + jobs(),
+                              /*may_fail=*/true);
+    MESSAGE(solution.output);
+    CHECK_MESSAGE(solution.exit_code == 0, "the self-checks fail on the solution");
 }
 
 namespace {
@@ -140,6 +165,80 @@ struct Block {
     size_t index = 0;  // in the file
     int line = 0;      // of its BEGIN marker
 };
+
+// The name of the function a block sits in: the identifier before the
+// first "(" of the nearest line above it that starts in column 0 and is no
+// comment or directive; empty at file scope (a shader's declarations).
+std::string enclosing_function(const std::string& text, int begin_line) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    static const std::regex name(R"((\w+)\s*\()");
+    for (int i = begin_line - 2; i >= 0; --i) {
+        const std::string& t = lines[static_cast<size_t>(i)];
+        if (t.empty() || std::isspace(static_cast<unsigned char>(t[0])) || t.rfind("//", 0) == 0 ||
+            t[0] == '#' || t[0] == '}')
+            continue;
+        std::smatch m;
+        if (std::regex_search(t, m, name)) return m[1];
+        return "";
+    }
+    return "";
+}
+
+// The numbered parts of a lab sheet's "## What you implement" section, each
+// part's text.
+std::vector<std::string> sheet_parts(const std::string& sheet) {
+    std::vector<std::string> parts;
+    const size_t at = sheet.find("\n## What you implement\n");
+    if (at == std::string::npos) return parts;
+    const size_t end = sheet.find("\n## ", at + 1);
+    std::istringstream in(sheet.substr(at + 1, end == std::string::npos ? end : end - at - 1));
+    static const std::regex item(R"(^\d+\. )");
+    for (std::string line; std::getline(in, line);) {
+        if (std::regex_search(line, item))
+            parts.push_back(line);
+        else if (!parts.empty())
+            parts.back() += "\n" + line;
+    }
+    return parts;
+}
+
+// The part of `parts` that a block of `file` in `function` belongs to: the
+// first that names both the file and the function, else the first naming
+// the file, else the first naming the function; -1 when none does.
+int part_of(const std::vector<std::string>& parts, const std::string& file,
+            const std::string& function) {
+    const std::string base = fs::path(file).filename().string();
+    const std::regex word("\\b" + (function.empty() ? std::string("$^") : function) + "\\b");
+    int by_file = -1, by_name = -1;
+    for (size_t k = 0; k < parts.size(); ++k) {
+        const bool f = parts[k].find(base) != std::string::npos;
+        const bool n = std::regex_search(parts[k], word);
+        if (f && n) return static_cast<int>(k);
+        if (f && by_file < 0) by_file = static_cast<int>(k);
+        if (n && by_name < 0) by_name = static_cast<int>(k);
+    }
+    return by_file >= 0 ? by_file : by_name;
+}
+
+// `text` with every block of `file` not in `kept` in its student version.
+std::string with_blocks(const std::string& text, const std::string& file,
+                        const std::set<size_t>& kept) {
+    std::string out = text;
+    const size_t n = grading::solution_blocks(text, file).size();
+    for (size_t i = n; i-- > 0;)  // from the last: earlier blocks keep their index
+        if (!kept.count(i)) out = grading::student_text_of_block(out, file, i);
+    return out;
+}
+
+// The visible points of a grade.
+double visible_score(const Grade& g) {
+    double sum = 0.0;
+    for (const auto& [name, e] : g.entries)
+        if (e.visibility == "visible") sum += e.score;
+    return sum;
+}
 
 }  // namespace
 
@@ -246,4 +345,75 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
             << std::string(all_graded ? ""
                                       : "; each block not caught needs a check of a visible "
                                         "checkpoint that fails without it (or is not needed)"));
+
+    // The sheet's order: per lab, its parts written one by one from the
+    // starting code; each part must raise the visible score.
+    std::string order;
+    for (const std::string& lab_dir : labs) {
+        const std::vector<std::string> parts =
+            sheet_parts(read_text(source / "labs" / lab_dir / "README.md"));
+        std::map<int, std::vector<Block>> by_part;
+        for (const Block& b : blocks) {
+            if (lab_of(b.file) != lab_dir) continue;
+            const std::string function = enclosing_function(read_text(source / b.file), b.line);
+            const int part = part_of(parts, b.file, function);
+            by_part[part].push_back(b);
+        }
+        if (by_part.empty()) continue;
+        if (by_part.size() > 1)
+            CHECK_MESSAGE(!by_part.count(-1),
+                          lab_dir << "'s sheet names no part for " << by_part[-1].front().file
+                                  << ":" << by_part[-1].front().line << " (What you implement)");
+        // Writes the lab's files with the blocks of `done` parts in their
+        // solution; returns whether `lab` built.
+        auto write_lab = [&](const std::set<int>& done) {
+            std::map<std::string, std::set<size_t>> kept;
+            std::set<std::string> lab_files;
+            for (const auto& [part, list] : by_part)
+                for (const Block& b : list) {
+                    lab_files.insert(b.file);
+                    if (done.count(part)) kept[b.file].insert(b.index);
+                }
+            bool rebuild = false;
+            for (const std::string& file : lab_files) {
+                const fs::path target = is_shader(file)
+                                            ? shaders / fs::path(file).lexically_relative("shaders")
+                                            : tree / file;
+                write_text(target, with_blocks(read_text(source / file), file, kept[file]));
+                rebuild = rebuild || !is_shader(file);
+            }
+            return !rebuild || rebuild_tree(tree, "lab");
+        };
+        auto grade_lab = [&]() {
+            return grade(course, cpp ? (tree / "build" / "bin" / "lab").string() : lab, lab_dir,
+                         dir / "order", "LAB_SHADER_DIR=" + shell_quote(shaders.string()));
+        };
+        std::set<int> done;
+        REQUIRE(write_lab(done));
+        double before = visible_score(grade_lab());
+        order += lab_dir + ": starting code " + fw::number_text(before, 6) + " visible points";
+        for (const auto& [part, list] : by_part) {
+            done.insert(part);
+            REQUIRE(write_lab(done));
+            const double after = visible_score(grade_lab());
+            order += std::string(", part ") + (part < 0 ? "?" : std::to_string(part + 1)) + " " +
+                     fw::number_text(after, 6);
+            CHECK_MESSAGE(after > before,
+                          lab_dir << ": part " << part + 1 << " (" << list.front().file << ":"
+                                  << list.front().line << ") leaves the visible score at "
+                                  << fw::number_text(after, 6)
+                                  << "; a check of a visible checkpoint must "
+                                     "pass once it is written in the sheet's order");
+            before = after;
+        }
+        order += "\n";
+        for (const auto& [part, list] : by_part)  // the solution again, for the next lab
+            for (const Block& b : list)
+                write_text(is_shader(b.file)
+                               ? shaders / fs::path(b.file).lexically_relative("shaders")
+                               : tree / b.file,
+                           read_text(source / b.file));
+    }
+    if (cpp) REQUIRE(rebuild_tree(tree, "lab"));
+    MESSAGE("each lab's parts written in the sheet's order, its visible score:\n" << order);
 }

@@ -187,6 +187,20 @@ TEST_CASE("pipeline: indexed: indexed and flat storage draw identical images") {
     CHECK(flat.stats["primitives_generated"] == 4);
 }
 
+TEST_CASE("pipeline: lab_stats report the vertex layout as GL holds it, in every scene") {
+    Pipeline lab;
+    for (const char* scene : {"order", "indexed", "primitives", "culling"}) {
+        CAPTURE(scene);
+        const nlohmann::json layout = lab.render({{"scene", scene}}).stats["lab_stats"]["layout"];
+        INFO(layout.dump());
+        // Two vec3 a vertex, 24 bytes: the position at 0, the colour at 12.
+        CHECK(layout["position"] ==
+              nlohmann::json{{"enabled", 1}, {"size", 3}, {"stride", 24}, {"offset", 0}});
+        CHECK(layout["color"] ==
+              nlohmann::json{{"enabled", 1}, {"size", 3}, {"stride", 24}, {"offset", 12}});
+    }
+}
+
 TEST_CASE("pipeline: indexed: lab_stats report the bytes each storage holds") {
     Pipeline lab;
     // A vertex is two vec3 (24 bytes), an index one GLuint (4 bytes).
