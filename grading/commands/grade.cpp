@@ -216,7 +216,8 @@ int grade_command(const GradeOptions& options) {
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_reports(run, options.out, {options.format, options.results, options.hidden_as});
     // The report's path last, where a student's eye ends.
-    std::printf("%s\nReport: %s\n", summary_table(run, options.verbose).c_str(),
+    const size_t shown = options.verbose ? static_cast<size_t>(-1) : kTerminalFailedChecks;
+    std::printf("%s\nReport: %s\n", summary_table(run, options.verbose, shown).c_str(),
                 (fs::path(options.out) / "index.html").string().c_str());
     return run.passed() ? 0 : 1;
 }

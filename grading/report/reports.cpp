@@ -272,11 +272,17 @@ std::string indented(const std::string& text, const std::string& prefix) {
 
 // A line per failed check (where, what, its points, why in a line), then
 // what most likely went wrong and, for a unit check, its first failing case.
-std::string failed_checks(const GradeRun& run) {
+std::string failed_checks(const GradeRun& run, size_t max_failed) {
     std::string failed;
+    size_t shown = 0, more = 0;
     for (const LabResult& lab : run.labs) {
         for (const CheckResult& c : lab.checks) {
             if (c.passed) continue;
+            if (shown == max_failed) {
+                ++more;
+                continue;
+            }
+            ++shown;
             // The Observed line says what went wrong; the Expected line only
             // repeats the check.
             const std::string why = check_failure(lab, c);
@@ -288,6 +294,10 @@ std::string failed_checks(const GradeRun& run) {
             failed += indented(c.diagnosis, "    ") + indented(c.first_case, "  ");
         }
     }
+    if (more)
+        failed += "  ... and " + std::to_string(more) + " more failed check" +
+                  (more == 1 ? "" : "s") +
+                  ": the report and summary.txt list them all (--verbose prints them here)\n";
     return failed.empty() ? "" : "\nFailed checks:\n" + failed;
 }
 
@@ -314,12 +324,12 @@ std::string score_meaning(const GradeRun& run) {
 }  // namespace
 }  // namespace report
 
-std::string summary_table(const GradeRun& run, bool sandbox) {
+std::string summary_table(const GradeRun& run, bool sandbox, size_t max_failed) {
     using report::ascii;
     using report::points;
     size_t passed = 0;
     for (const LabResult& lab : run.labs) passed += report::passed_count(lab);
-    std::string table = lab_table(run) + report::failed_checks(run);
+    std::string table = lab_table(run) + report::failed_checks(run, max_failed);
     const size_t labs = run.labs.size();
     table += "\nTotal: " + points(run.score()) + "/" + points(run.max_score()) + " points, " +
              std::to_string(passed) + " of " + std::to_string(report::check_count(run)) +

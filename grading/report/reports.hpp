@@ -4,6 +4,7 @@
 // index.html.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "grading/results/results.hpp"
@@ -30,8 +31,13 @@ struct ResultsFile {
 // check with why in a line, what most likely went wrong and, for a unit
 // check, its first failing case; the total and what it means; and, with
 // `sandbox`, the sandbox's layers in a line (summary.txt has them always,
-// the terminal with `course grade --verbose`).
-std::string summary_table(const GradeRun& run, bool sandbox = true);
+// the terminal with `course grade --verbose`). The terminal shows the first
+// `max_failed` failed checks and counts the rest (summary.txt: all).
+std::string summary_table(const GradeRun& run, bool sandbox = true,
+                          std::size_t max_failed = static_cast<std::size_t>(-1));
+
+// How many failed checks `course grade` prints without --verbose.
+constexpr std::size_t kTerminalFailedChecks = 25;
 
 // The first part of that table: a header and one line per lab (score, checks
 // passed, status, seconds), without the failed checks or the total.

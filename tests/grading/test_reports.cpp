@@ -562,6 +562,13 @@ TEST_CASE(
     CHECK(terminal.find("Sandbox:") == std::string::npos);
     CHECK(grading::summary_table(run).find("\nSandbox: on: seccomp filter") != std::string::npos);
     CHECK(read_text(dir + "/summary.txt") == grading::summary_table(run));
+    // The terminal's cap: the first failed check shown, the other counted.
+    const std::string capped = grading::summary_table(run, false, 1);
+    CHECK(capped.find("Likely mistake (transpose)") != std::string::npos);
+    CHECK(capped.find("01_transforms/secret") == std::string::npos);
+    CHECK(capped.find("  ... and 1 more failed check: the report and summary.txt list them all") !=
+          std::string::npos);
+    CHECK(terminal.find("more failed check") == std::string::npos);
 
     // Fractional scores reach Gradescope's and PrairieLearn's results as numbers.
     const auto gradescope = nlohmann::json::parse(read_text(dir + "/results.json"));
