@@ -57,6 +57,16 @@ CheckpointFile read_checkpoint_file(const std::string& path) {
     CheckpointFile file;
     file.path = path;
     file.lab = lab_of_checkpoint_file(path, doc, fail);
+    if (doc.contains("hidden")) {
+        const nlohmann::json& h = doc["hidden"];
+        if (!h.is_object() || !h.value("checkpoints", nlohmann::json()).is_number_unsigned() ||
+            !h.value("points", nlohmann::json()).is_number() || h["points"].get<double>() < 0)
+            fail(
+                "\"hidden\" must be {\"checkpoints\": N, \"points\": P} (what course release "
+                "left out)");
+        file.hidden_checkpoints = h["checkpoints"].get<int>();
+        file.hidden_points = h["points"].get<double>();
+    }
     std::set<std::string> names;
     for (const auto& item : doc["checkpoints"]) {
         Checkpoint cp;

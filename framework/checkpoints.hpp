@@ -32,6 +32,11 @@ struct CheckpointFile {
     std::string path;
     std::string lab;  // the lab's id, from the folder's name
     std::vector<Checkpoint> checkpoints;
+    // A student's copy (`course release`) says what it left out: the number
+    // of hidden checkpoints and their points ("hidden": {"checkpoints": N,
+    // "points": P}); zero elsewhere.
+    int hidden_checkpoints = 0;
+    double hidden_points = 0.0;
 };
 
 // Reads the file and checks its structure (fields, names, visibility) without

@@ -149,6 +149,8 @@ LabResult grade_lab(const LabData& lab, const ChildSetup& setup,
     result.log = child.run.log;
     result.seconds = child.run.seconds;
     result.checks = judge_lab(lab, plan, *child.outputs, setup.out, threads());
+    result.hidden_left_out = lab.file.hidden_checkpoints;
+    result.hidden_points_left_out = lab.file.hidden_points;
     if (child.run.ok()) {
         const std::string shader_error = shader_error_status(*child.outputs);
         if (!shader_error.empty()) result.status = LabStatus::failed(shader_error);

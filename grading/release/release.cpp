@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/results/results.hpp"
 
 namespace fs = std::filesystem;
@@ -331,6 +332,9 @@ VisibleCheckpoints drop_hidden_checkpoints(const std::string& text, const std::s
             entry.value("visibility", std::string(name_of(Visibility::Visible))) ==
                 name_of(Visibility::Hidden)) {
             result.dropped.push_back(entry.value("name", std::string("(unnamed)")));
+            for (const nlohmann::json& check : entry.value("checks", nlohmann::json::array()))
+                if (check.is_object() && check.value("points", nlohmann::json()).is_number())
+                    result.hidden_points += check["points"].get<double>();
         } else {
             kept.push_back(starts.size() - 1);
             expected["checkpoints"].push_back(entry);
@@ -341,6 +345,14 @@ VisibleCheckpoints drop_hidden_checkpoints(const std::string& text, const std::s
         return result;
     }
     result.text = kept_entries(text, starts, ends, kept);
+    // What the student's copy knows of them: how many, and their points.
+    const nlohmann::json hidden = {{"checkpoints", result.dropped.size()},
+                                   {"points", result.hidden_points}};
+    const size_t brace = json_tokens(result.text, path).front().end;
+    result.text.insert(brace,
+                       "\"hidden\": {\"checkpoints\": " + std::to_string(result.dropped.size()) +
+                           ", \"points\": " + fw::number_text(result.hidden_points, 6) + "},\n ");
+    expected["hidden"] = hidden;
     if (parse_json(result.text, path + " (without its hidden checkpoints)") != expected)
         throw fw::Error(path +
                         ": cutting the hidden checkpoints out of the text did not leave "

@@ -48,11 +48,14 @@ std::string student_text_of_block(const std::string& text, const std::string& pa
 // A checkpoints file (framework/checkpoints.hpp) without its hidden
 // checkpoints. The text is cut rather than rewritten, so the remaining
 // entries keep their layout and comments; the comment lines directly above a
-// hidden entry (no blank line between) describe it and go with it. The result
-// is parsed back and must hold exactly the visible entries, else fw::Error.
+// hidden entry (no blank line between) describe it and go with it. What the
+// student's copy keeps of them is a top-level "hidden": {"checkpoints": N,
+// "points": P}, so that its reports can say what the autograder adds. The
+// result is parsed back and must hold exactly that, else fw::Error.
 struct VisibleCheckpoints {
     std::string text;
     std::vector<std::string> dropped;  // names of the hidden checkpoints, in file order
+    double hidden_points = 0.0;        // the points of their checks
 };
 VisibleCheckpoints drop_hidden_checkpoints(const std::string& text, const std::string& path);
 

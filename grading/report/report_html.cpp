@@ -265,7 +265,15 @@ std::string hidden_html(const GradeRun& run) {
                 hidden += cp.max_score;
                 scored += cp.score;
             }
-    if (checkpoints == 0) return "";
+    if (checkpoints == 0) {
+        const GradeRun::LeftOut left_out = run.hidden_left_out();
+        if (left_out.checkpoints == 0) return "";
+        return "<p class=\"hidden-points\">On submission the autograder adds " +
+               std::to_string(left_out.checkpoints) +
+               (left_out.checkpoints == 1 ? " hidden checkpoint (" : " hidden checkpoints (") +
+               points(left_out.points) + " points) to the " + points(run.max_score()) +
+               " points here: they test the same code with other parameters.</p>\n";
+    }
     return "<p class=\"hidden-points\">" + points(hidden) + " of the " + points(run.max_score()) +
            " points are hidden (" + std::to_string(checkpoints) +
            (checkpoints == 1 ? " hidden checkpoint" : " hidden checkpoints") + ", " +

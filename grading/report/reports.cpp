@@ -309,10 +309,16 @@ std::string score_meaning(const GradeRun& run) {
     for (const LabResult& lab : run.labs)
         for (const CheckResult& c : lab.checks)
             if (c.visibility == Visibility::Hidden) hidden += c.max_score;
+    const GradeRun::LeftOut left_out = run.hidden_left_out();
     std::string text;
     if (hidden > 0)
         text += points(rounded_points(hidden)) + " of these points are in hidden checkpoints: " +
                 "a student's copy leaves them out, and they are graded on submission.\n";
+    else if (left_out.checkpoints > 0)
+        text += "On submission the autograder adds " + std::to_string(left_out.checkpoints) +
+                " hidden checkpoint" + (left_out.checkpoints == 1 ? "" : "s") + " (" +
+                points(left_out.points) + " points) to these: the same code with other " +
+                "parameters.\n";
     if (!run.passed())
         text +=
             "A check's points come when it passes; a unit check gives points in proportion "

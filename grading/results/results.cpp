@@ -80,4 +80,14 @@ bool GradeRun::passed() const {
     return std::all_of(labs.begin(), labs.end(), [](const LabResult& l) { return l.passed(); });
 }
 
+GradeRun::LeftOut GradeRun::hidden_left_out() const {
+    LeftOut out;
+    for (const LabResult& lab : labs) {
+        out.checkpoints += lab.hidden_left_out;
+        out.points += lab.hidden_points_left_out;
+    }
+    out.points = rounded_points(out.points);
+    return out;
+}
+
 }  // namespace grading

@@ -67,6 +67,10 @@ struct LabResult {
     std::string log;  // the last part of the child's stdout and stderr
     double seconds = 0.0;
     std::vector<CheckResult> checks;
+    // The hidden checkpoints this copy of the course does not have (a
+    // student's copy: `course release` left them out), and their points.
+    int hidden_left_out = 0;
+    double hidden_points_left_out = 0.0;
 
     double score() const;
     double max_score() const;
@@ -84,6 +88,12 @@ struct GradeRun {
     double score() const;
     double max_score() const;
     bool passed() const;
+    // The labs' hidden checkpoints left out of this copy, and their points.
+    struct LeftOut {
+        int checkpoints = 0;
+        double points = 0.0;
+    };
+    LeftOut hidden_left_out() const;
 };
 
 }  // namespace grading

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "framework/checkpoints.hpp"
 #include "framework/text.hpp"
 #include "grading/release/release.hpp"
 #include "tests/support/test_support.hpp"
@@ -171,10 +172,12 @@ const std::string kCheckpoints =
 TEST_CASE("release: hidden checkpoints are cut from the text, with their comments") {
     auto v = grading::drop_hidden_checkpoints(kCheckpoints, "labs/x/checkpoints.json");
     CHECK(v.dropped == std::vector<std::string>{"h1", "h2"});
+    CHECK(v.hidden_points == 1);
     check_text(
         v.text,
         "// Header comment.\n"
-        "{\"lab\": \"x\",\n"
+        "{\"hidden\": {\"checkpoints\": 2, \"points\": 1},\n"
+        " \"lab\": \"x\",\n"
         " \"checkpoints\": [\n"
         "  // about a\n"
         "  {\"name\": \"a\", \"visibility\": \"visible\", \"params\": {\"s\": \"[a, b]\"}},\n"
@@ -194,7 +197,20 @@ TEST_CASE("release: checkpoints files with nothing hidden, or everything") {
         " /* why */ {\"name\": \"g\", \"visibility\": \"hidden\"}]}";
     v = grading::drop_hidden_checkpoints(all, "c.json");
     CHECK(v.dropped == std::vector<std::string>{"h", "g"});
-    check_text(v.text, "{\"lab\": \"x\", \"checkpoints\": []}");
+    check_text(
+        v.text,
+        "{\"hidden\": {\"checkpoints\": 2, \"points\": 0},\n \"lab\": \"x\", \"checkpoints\": []}");
+    // What the student's copy reads back.
+    const fs::path file = fs::path(fw::test::out_dir()) / "hidden" / "labs/00_x/checkpoints.json";
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << grading::drop_hidden_checkpoints(kCheckpoints, "c.json").text;
+    const fw::CheckpointFile read = fw::read_checkpoint_file(file.string());
+    CHECK(read.hidden_checkpoints == 2);
+    CHECK(read.hidden_points == 1);
+    std::ofstream(file)
+        << "{\"hidden\": {\"checkpoints\": -1, \"points\": 1}, \"checkpoints\": []}";
+    check_mentions(thrown([&] { fw::read_checkpoint_file(file.string()); }),
+                   {file.string(), "\"hidden\" must be"});
 
     check_mentions(thrown([] { grading::drop_hidden_checkpoints("{\"lab\": \"x\"}", "c.json"); }),
                    {"c.json", "\"checkpoints\" array"});

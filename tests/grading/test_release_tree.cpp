@@ -134,6 +134,10 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
         CHECK(g.status.count(id) == 1);
         CHECK(g.status[id] == "ok");
     }
+    // The hidden checkpoints it lacks are counted, in the terminal and the report.
+    CHECK(g.output.find("On submission the autograder adds ") != std::string::npos);
+    CHECK(read_text(dir / "grade" / "index.html").find("On submission the autograder adds ") !=
+          std::string::npos);
     const double score = g.results["score"], max_score = g.results["max_score"];
     MESSAGE("student version: " << score << " of " << max_score << " points");
     CHECK(max_score > 0);
