@@ -8,6 +8,13 @@
 #
 #   scripts/fresh-debian.sh trixie          # bookworm, trixie, forky (testing), sid
 #   scripts/fresh-debian.sh --keep forky    # keep the system afterwards (path printed)
+#   scripts/fresh-debian.sh --student trixie
+#       the student's side instead: builds `course` (LAB_PRESET=student
+#       scripts/setup.sh), writes the student repository with `course release`,
+#       and runs the student README's two commands there (scripts/setup.sh,
+#       then scripts/grade.sh transforms on the starting code): the set-up must
+#       build only lab and course, and the starting code must score low with
+#       the sentence that says so (exit 1)
 #
 # Environment:
 #   FRESH_DEBIAN_MIRROR  Debian mirror (default http://deb.debian.org/debian)
@@ -40,9 +47,9 @@ usage() {
 }
 
 # --- Internal: the part that runs inside the namespaces (or directly). -------
-# fresh-debian.sh --inside SUITE TARGET REPO RESULTS
+# fresh-debian.sh --inside SUITE TARGET REPO RESULTS MODE (staff or student)
 inside() {
-  local suite=$1 target=$2 repo=$3 results=$4
+  local suite=$1 target=$2 repo=$3 results=$4 mode=${5:-staff}
   local mirror=${FRESH_DEBIAN_MIRROR:-http://deb.debian.org/debian}
   local cache=${FRESH_DEBIAN_CACHE:-}
 
@@ -122,18 +129,30 @@ inside() {
   in_root git clone -q --no-hardlinks /mnt/origin /root/gl-labs
   say "cloned $(in_root git -C /root/gl-labs log -1 --format='%h %s')"
 
-  local step status=0 seconds
-  for step in grade test; do
-    say "running scripts/$step.sh in $suite"
+  # One step: its command in the system, its log and "STATUS SECONDS".
+  run_step() {
+    local step=$1 command=$2
+    say "running $step in $suite: $command"
     t0=$SECONDS
     set +e
-    in_root bash -c "cd /root/gl-labs && scripts/$step.sh" 2>&1 | tee "$results/$step.log" |
-      sed -u "s/^/[$suite] /"
+    in_root bash -c "$command" 2>&1 | tee "$results/$step.log" | sed -u "s/^/[$suite] /"
     status=${PIPESTATUS[0]}
     set -e
     seconds=$((SECONDS - t0))
     echo "$status $seconds" >"$results/$step.status"
-  done
+  }
+  local step status=0 seconds
+  if [ "$mode" = student ]; then
+    run_step course "cd /root/gl-labs && LAB_PRESET=student scripts/setup.sh"
+    run_step release "cd /root/gl-labs && build/bin/course release --out /root/student"
+    run_step student-setup "cd /root/student && scripts/setup.sh"
+    run_step student-grade "cd /root/student && scripts/grade.sh transforms"
+    in_root bash -c 'cd /root/student/build/bin && ls' >"$results/student-built" 2>&1 || true
+  else
+    for step in grade test; do
+      run_step "$step" "cd /root/gl-labs && scripts/$step.sh"
+    done
+  fi
 
   # What the set-up installed.
   in_root dpkg-query -W -f='${Package} ${Version}\n' libegl-mesa0 libosmesa6-dev g++ cmake \
@@ -192,6 +211,34 @@ skipped() {
 
 version_of() { awk -v p="$1" '$1 == p { print $2 }' "$2"; }
 
+# The student's side (--student): course built, the release written, the
+# student's set-up building only lab and course, and the starting code of
+# lab 1 scoring low with the sentence that says so.
+report_student() {
+  local results=$1 step status seconds failed=0 expected
+  for step in course release student-setup student-grade; do
+    if [ ! -f "$results/$step.status" ]; then
+      say "  $step: did not run"
+      failed=1
+      continue
+    fi
+    read -r status seconds <"$results/$step.status"
+    expected=0
+    [ "$step" = student-grade ] && expected=1
+    say "  $step: exit $status in ${seconds} s$( [ "$step" = student-grade ] && grep -E '^Total:' "$results/$step.log" | tail -n 1 | sed 's/^/: /')"
+    [ "$status" -eq "$expected" ] || { say "    expected exit $expected"; failed=1; }
+  done
+  if ! grep -q "starting copy scores low" "$results/student-grade.log" 2>/dev/null; then
+    say "  the starting code's grade does not say that a starting copy scores low"
+    failed=1
+  fi
+  local built
+  built=$(tr '\n' ' ' <"$results/student-built" 2>/dev/null)
+  say "  the student's build/bin: ${built:-nothing}"
+  [ "$built" = "course lab " ] || { say "    expected only course and lab"; failed=1; }
+  return "$failed"
+}
+
 report() {
   local suite=$1 results=$2 step status seconds summary
   local v=$results/versions
@@ -202,6 +249,10 @@ report() {
   osmesa=$(version_of libosmesa6-dev "$v")
   say "  OSMesa: ${osmesa:-not installed (not in $suite)}"
   local failed=0
+  if [ -f "$results/student-grade.status" ]; then
+    report_student "$results" || failed=1
+    return "$failed"
+  fi
   for step in grade test; do
     if [ ! -f "$results/$step.status" ]; then
       say "  scripts/$step.sh: did not run"
@@ -228,10 +279,12 @@ if [ "${1:-}" = --inside ]; then
 fi
 
 keep=0
+mode=staff
 suite=
 for arg in "$@"; do
   case $arg in
     --keep) keep=1 ;;
+    --student) mode=student ;;
     -h | --help) usage ;;
     -*) say "unknown option '$arg'" >&2; usage ;;
     *) [ -z "$suite" ] || usage; suite=$arg ;;
@@ -315,7 +368,7 @@ else
   runner=(bash "$0" --inside)
 fi
 t_all=$SECONDS
-"${runner[@]}" "$suite" "$target" "$repo" "$results" &
+"${runner[@]}" "$suite" "$target" "$repo" "$results" "$mode" &
 child=$!
 set +e
 wait "$child"
