@@ -7,7 +7,5 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/setup.sh"
 out="$root/build/grade"
-status=0
-"$root/build/bin/course" grade --out "$out" "$@" || status=$?
-echo "grade: report in $out/index.html"
-exit "$status"
+# course prints the report's path last.
+exec "$root/build/bin/course" grade --out "$out" "$@"

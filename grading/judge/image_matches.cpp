@@ -34,7 +34,7 @@ bool has_image_check(const LabData& lab, size_t k) {
 }
 
 std::string value_text(const nlohmann::json* value) {
-    if (!value) return "its default";
+    if (!value) return "the default";
     if (value->is_number_float()) return fw::number_text(value->get<double>(), 6);
     return value->dump();
 }
@@ -136,11 +136,13 @@ std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoin
                    "): your code most likely treats " + name + " " + here + " as " + there + ".";
         }
         std::vector<std::string> pairs;
-        for (const std::string& name : differ)
-            pairs.push_back(name + " " + value_text(param(other, name)) + " there, " +
-                            value_text(param(checkpoint, name)) + " here");
-        return text + ", which differs from " + checkpoint.name + " in " + fw::join(pairs, "; ") +
-               ": your code most likely mixes these parameters up or ignores them.";
+        for (const std::string& name : differ) {
+            const nlohmann::json *here = param(checkpoint, name), *there = param(other, name);
+            pairs.push_back(name + " (" + value_text(there) + " there, " + value_text(here) +
+                            " here)");
+        }
+        return text + ", which differs from " + checkpoint.name + " in " + fw::join(pairs, ", ") +
+               ": your code most likely ignores these parameters or mixes them up.";
     }
     return "";
 }

@@ -315,6 +315,15 @@ TEST_CASE("a failed frame that is another checkpoint's expected image is named s
     CHECK(sentence ==
           "Your frame is the one checkpoint srt expects (order \"srt\", here \"trs\"): your "
           "code most likely treats order \"trs\" as \"srt\".");
+    // translate drawn as the identity (its model matrix ignores tx and ty):
+    // every parameter that differs is named.
+    const fw::Image* identity = references.get("identity");
+    REQUIRE(identity != nullptr);
+    CHECK(grading::matching_checkpoint_sentence(lab, checkpoint("translate"), *identity,
+                                                fw::CompareOptions{}, references) ==
+          "Your frame is the one checkpoint identity expects, which differs from translate in tx "
+          "(the default there, 1 here), ty (the default there, -0.5 here): your code most likely "
+          "ignores these parameters or mixes them up.");
     // A frame that is no checkpoint's (all black), or of another size: nothing.
     const fw::Image black(srt->width, srt->height, fw::Rgba8{0, 0, 0, 255});
     CHECK(grading::matching_checkpoint_sentence(lab, checkpoint("trs"), black, fw::CompareOptions{},
