@@ -400,7 +400,8 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
             done.insert(part);
             REQUIRE(write_lab(done));
             const double after = visible_score(grade_lab());
-            order += std::string(", part ") + (part < 0 ? "?" : std::to_string(part + 1)) + " " +
+            order += std::string(", part ") +
+                     (part < 0 ? "(the only one)" : std::to_string(part + 1)) + " " +
                      fw::number_text(after, 6);
             CHECK_MESSAGE(after > before,
                           lab_dir << ": part " << part + 1 << " (" << list.front().file << ":"
