@@ -68,8 +68,9 @@ std::string choice_names() {
 // One named field of an aggregate unit value, all of type F.
 template <class T, class F>
 struct Field {
+    using Member = F T::*;
     const char* name;
-    F T::*member;
+    Member member;
 };
 
 // Specialise for an aggregate T with `static constexpr Field<T, F> list[]`

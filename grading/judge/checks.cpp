@@ -302,6 +302,9 @@ void parse_checks(LabData& lab) {
         for (size_t i = 0; i < cp.checks.size(); ++i)
             lab.checks[k].push_back(parse_check(lab, cp, i, cp.checks[i], recorded));
     }
+    std::vector<std::string> names;
+    for (const fw::Checkpoint& cp : lab.file.checkpoints) names.push_back(cp.name);
+    lab.mistake_frames = read_mistake_frames(lab.root, lab.dir, names);
 }
 
 LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {

@@ -30,6 +30,7 @@
 
 #include "framework/checkpoints.hpp"
 #include "framework/image.hpp"
+#include "grading/judge/known_mistakes.hpp"
 #include "grading/results/results.hpp"
 #include "grading/run/child.hpp"
 #include "grading/run/repository.hpp"
@@ -42,6 +43,13 @@ struct ImageCheck {
     int tolerance = 8;  // 0-255
     int radius = 1;     // 1: a 3x3 neighbourhood
     double max_fail_fraction = 0.001;
+    fw::CompareOptions options() const {
+        fw::CompareOptions o;
+        o.tolerance = tolerance;
+        o.radius = radius;
+        o.max_failed_fraction = max_fail_fraction;
+        return o;
+    }
 };
 // A probe's tolerance when its check gives none: a colour's per channel, a depth's.
 constexpr double kColorTolerance = 0.01, kDepthTolerance = 1e-5;
@@ -95,6 +103,8 @@ struct LabData {
     fw::CheckpointFile file;
     // Each checkpoint's checks, parsed (parse_checks), in the file's order.
     std::vector<std::vector<Check>> checks;
+    // The frames of mistakes the course knows, per checkpoint (known_mistakes.hpp).
+    MistakeFrames mistake_frames;
 
     // "labs/00_pipeline/reference/NAME.png", relative to root (for messages).
     std::string reference(const std::string& checkpoint) const;

@@ -81,16 +81,16 @@ ReferenceImages::Summary ReferenceImages::summarise(const fw::Image& image) {
     return s;
 }
 
-const ReferenceImages::Entry& ReferenceImages::entry(const std::string& checkpoint) {
+const ReferenceImages::Entry& ReferenceImages::entry(const std::string& relative) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        auto found = entries_.find(checkpoint);
+        auto found = entries_.find(relative);
         if (found != entries_.end()) return *found->second;
     }
     // Decoded outside the lock, so threads decode different images at once;
     // two threads may decode the same one, and the first stored wins.
     auto made = std::make_unique<Entry>();
-    const std::string path = lab_.root + "/" + lab_.reference(checkpoint);
+    const std::string path = lab_.root + "/" + relative;
     if (std::filesystem::exists(path)) {
         try {
             made->image = std::make_unique<fw::Image>(fw::read_png(path));
@@ -100,16 +100,24 @@ const ReferenceImages::Entry& ReferenceImages::entry(const std::string& checkpoi
         }
     }
     std::lock_guard<std::mutex> lock(mutex_);
-    return *entries_.emplace(checkpoint, std::move(made)).first->second;
+    return *entries_.emplace(relative, std::move(made)).first->second;
+}
+
+const fw::Image* ReferenceImages::image_at(const std::string& relative) {
+    return entry(relative).image.get();
+}
+
+const ReferenceImages::Summary* ReferenceImages::summary_at(const std::string& relative) {
+    const Entry& e = entry(relative);
+    return e.image ? &e.summary : nullptr;
 }
 
 const fw::Image* ReferenceImages::get(const std::string& checkpoint) {
-    return entry(checkpoint).image.get();
+    return image_at(lab_.reference(checkpoint));
 }
 
 const ReferenceImages::Summary* ReferenceImages::summary(const std::string& checkpoint) {
-    const Entry& e = entry(checkpoint);
-    return e.image ? &e.summary : nullptr;
+    return summary_at(lab_.reference(checkpoint));
 }
 
 std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
@@ -143,6 +151,23 @@ std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoin
         }
         return text + ", which differs from " + checkpoint.name + " in " + fw::join(pairs, ", ") +
                ": your code most likely ignores these parameters or mixes them up.";
+    }
+    return "";
+}
+
+std::string known_mistake_frame_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                         const fw::Image& frame, const fw::CompareOptions& options,
+                                         ReferenceImages& references) {
+    const auto known = lab.mistake_frames.find(checkpoint.name);
+    if (known == lab.mistake_frames.end()) return "";
+    const ReferenceImages::Summary mine = ReferenceImages::summarise(frame);
+    for (const MistakeFrame& m : known->second) {
+        const std::string path = mistake_frames_dir(lab.dir) + "/" + m.image;
+        const ReferenceImages::Summary* theirs = references.summary_at(path);
+        if (!theirs || !close_summaries(mine, *theirs)) continue;
+        const fw::Image* image = references.image_at(path);
+        if (image && fw::compare_images(frame, *image, options).passed)
+            return known_mistake_sentence(m);
     }
     return "";
 }

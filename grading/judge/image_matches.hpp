@@ -3,7 +3,9 @@
 // checkpoint's reference), the student's code most likely does for this
 // checkpoint what it should do for the other one: lab 1's `trs` drawn in the
 // order of `srt`, a camera that ignores `fov`. The report says so in one
-// sentence, with the parameters in which the two checkpoints differ.
+// sentence, with the parameters in which the two checkpoints differ. A frame
+// that matches the frame of a mistake the course knows (known_mistakes.hpp)
+// is named too.
 #pragma once
 
 #include <map>
@@ -35,13 +37,17 @@ public:
     };
     static Summary summarise(const fw::Image& image);
     const Summary* summary(const std::string& checkpoint);
+    // The same for any image of the lab's reference folder, by its path
+    // relative to the repository (a known mistake's frame).
+    const fw::Image* image_at(const std::string& relative);
+    const Summary* summary_at(const std::string& relative);
 
 private:
     struct Entry {
         std::unique_ptr<fw::Image> image;  // null when missing or unreadable
         Summary summary;
     };
-    const Entry& entry(const std::string& checkpoint);
+    const Entry& entry(const std::string& relative);
 
     const LabData& lab_;
     std::mutex mutex_;
@@ -53,6 +59,13 @@ private:
 // whose reference the frame matches under the same options, named with the
 // parameters in which the two differ; empty when none matches.
 std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                         const fw::Image& frame, const fw::CompareOptions& options,
+                                         ReferenceImages& references);
+
+// The sentence for a frame of `checkpoint` that fails its own reference but
+// matches, under `options`, the frame of a mistake the course knows
+// (known_mistake_sentence); empty when none matches.
+std::string known_mistake_frame_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
                                          const fw::Image& frame, const fw::CompareOptions& options,
                                          ReferenceImages& references);
 

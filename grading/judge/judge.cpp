@@ -133,10 +133,7 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
                  Frame& frame, const std::string& out_dir, ReferenceImages& references,
                  CheckResult& r) {
     r.title = "image vs reference";
-    fw::CompareOptions opt;
-    opt.tolerance = check.tolerance;
-    opt.radius = check.radius;
-    opt.max_failed_fraction = check.max_fail_fraction;
+    const fw::CompareOptions opt = check.options();
     const int side = 2 * opt.radius + 1;
     const std::string expected =
         "Expected: " + lab.reference(cp.name) + "; a pixel passes when a reference pixel in its " +
@@ -169,8 +166,16 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
         fw::write_png(out_dir + "/" + r.difference, c.difference);
     }
     std::string where = c.passed ? "" : describe_difference(*image, reference, c);
-    if (!c.passed && !c.size_mismatch)
-        r.diagnosis = matching_checkpoint_sentence(lab, cp, *image, opt, references);
+    if (!c.passed && !c.size_mismatch) {
+        // The known mistake first: it says what the code does; another
+        // checkpoint's image says only which parameters it mixes up.
+        std::vector<std::string> sentences;
+        for (const std::string& s :
+             {known_mistake_frame_sentence(lab, cp, *image, opt, references),
+              matching_checkpoint_sentence(lab, cp, *image, opt, references)})
+            if (!s.empty()) sentences.push_back(s);
+        r.diagnosis = fw::join(sentences, "\n");
+    }
     verdict(r, c.passed,
             expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where) +
                 (r.diagnosis.empty() ? "" : "\n" + r.diagnosis));

@@ -116,12 +116,17 @@ ReleasePlan plan_release(const fs::path& root, ReleaseSummary& summary) {
     return plan;
 }
 
-// Whether `rel` is the reference image of a hidden checkpoint.
+// Whether `rel` is the reference image of a hidden checkpoint
+// (labs/NN_name/reference/CHECKPOINT.png), or one of the files of its known
+// mistakes' frames (reference/mistakes/CHECKPOINT.json, CHECKPOINT.N.png).
 bool is_hidden_reference(const ReleasePlan& plan, const std::string& rel) {
     const fs::path r(rel);
-    const auto lab = plan.hidden.find(r.parent_path().parent_path().string());
-    return r.parent_path().filename() == "reference" && lab != plan.hidden.end() &&
-           lab->second.count(r.stem().string());
+    fs::path folder = r.parent_path();
+    if (folder.filename() == "mistakes") folder = folder.parent_path();
+    const auto lab = plan.hidden.find(folder.parent_path().string());
+    if (folder.filename() != "reference" || lab == plan.hidden.end()) return false;
+    const std::string name = r.filename().string();
+    return lab->second.count(name.substr(0, name.find('.'))) > 0;
 }
 
 void create_parent(const fs::path& path) {

@@ -253,10 +253,8 @@ TEST_CASE("a recorded reference knows only its recorded arguments; compiled ones
     const json args = cases["checks"][0]["random"][0];
     CHECK(ref.function.call(args) ==
           grading::find_reference("transforms", "translate").function.call(args));
-    fw::test::check_mentions(fw::test::thrown([&] {
-                                 ref.function.call(json{{1.5, 2, 3}});
-                             }),
-                             {"not recorded", "[[1.5,2,3]]"});
+    const auto call_unrecorded = [&] { ref.function.call(json{{1.5, 2, 3}}); };
+    fw::test::check_mentions(fw::test::thrown(call_unrecorded), {"not recorded", "[[1.5,2,3]]"});
     CHECK_FALSE(grading::register_reference(lab.dir, ref));
     CHECK_FALSE(grading::find_reference("transforms", "translate").recorded);
     // A check the file has no cases for is refused when the checks are read.

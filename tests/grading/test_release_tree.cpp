@@ -93,6 +93,19 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
         for (const auto& cp : released.checkpoints) observed.push_back(cp.name);
         INFO(lab << ": expected the visible checkpoints, in order");
         CHECK(observed == expected);
+        // The known mistakes' frames (CHECKPOINT.json, CHECKPOINT.N.png):
+        // those of visible checkpoints only, all of them.
+        const fs::path frames = fs::path("labs") / lab / "reference" / "mistakes";
+        if (!fs::is_directory(source / frames)) continue;
+        for (const auto& e : fs::directory_iterator(source / frames)) {
+            const std::string name = e.path().filename().string();
+            const std::string checkpoint = name.substr(0, name.find('.'));
+            const bool visible = std::count(expected.begin(), expected.end(), checkpoint) > 0;
+            CHECK_MESSAGE(fs::exists(student / frames / name) == visible,
+                          (frames / name).string()
+                              << (visible ? " of a visible checkpoint is missing"
+                                          : " of a hidden checkpoint was released"));
+        }
     }
 
     // The staff's own files stay out; the README is the student's.

@@ -339,6 +339,66 @@ TEST_CASE("a failed frame that is another checkpoint's expected image is named s
               .find("checkpoint srt") == std::string::npos);
 }
 
+TEST_CASE("a failed frame that a known mistake draws is named by the mistake's id") {
+    namespace fs = std::filesystem;
+    // A copy of lab 1's data with one known mistake's frame for trs: black.
+    const fs::path root = fs::path(fw::test::out_dir()) / "known-mistakes";
+    const fs::path lab_dir = root / "labs" / "01_transforms";
+    fs::remove_all(root);
+    fs::create_directories(lab_dir);
+    const fs::path source = fs::path(fw::test::source_dir()) / "labs" / "01_transforms";
+    fs::copy_file(source / "checkpoints.json", lab_dir / "checkpoints.json");
+    fs::copy(source / "reference", lab_dir / "reference", fs::copy_options::recursive);
+    fs::remove_all(lab_dir / "reference" / "mistakes");
+    const fs::path folder = lab_dir / "reference" / "mistakes";
+    const fw::Image srt = fw::read_png((lab_dir / "reference" / "srt.png").string());
+    const fw::Image black(srt.width, srt.height, fw::Rgba8{0, 0, 0, 255});
+    fs::create_directories(folder);
+    fw::write_png((folder / "trs.1.png").string(), black);
+    const grading::KnownMistake late{"transforms-late", "multiplies on the wrong side"},
+        blank{"transforms-blank", "draws nothing"};
+    fw::test::write_text((folder / "trs.json").string(),
+                         grading::mistake_frames_text({{"trs.1.png", {late}}}));
+    auto load = [&] {
+        std::vector<grading::LabData> labs = grading::discover_labs(root.string());
+        REQUIRE(labs.size() == 1);
+        grading::parse_checks(labs[0]);
+        return labs[0];
+    };
+    grading::LabData lab = load();
+    REQUIRE(lab.mistake_frames.count("trs") == 1);
+    const fw::Checkpoint* trs = nullptr;
+    for (const fw::Checkpoint& cp : lab.file.checkpoints)
+        if (cp.name == "trs") trs = &cp;
+    REQUIRE(trs != nullptr);
+    grading::ReferenceImages references(lab);
+    CHECK(grading::known_mistake_frame_sentence(lab, *trs, black, {}, references) ==
+          "Your frame is the one a known mistake draws (transforms-late): code that multiplies "
+          "on the wrong side.");
+    // Another frame, or another checkpoint: nothing.
+    CHECK(grading::known_mistake_frame_sentence(lab, *trs, srt, {}, references).empty());
+    CHECK(grading::known_mistake_frame_sentence(lab, lab.file.checkpoints.front(), black, {},
+                                                references)
+              .empty());
+    // Two mistakes that draw the same frame are both named.
+    CHECK(grading::known_mistake_sentence({"trs.1.png", {late, blank}}) ==
+          "Your frame is the one known mistakes draw (transforms-late, transforms-blank): code "
+          "that multiplies on the wrong side, or code that draws nothing.");
+
+    // The files are validated with the checkpoints, each error naming the file.
+    fw::test::write_text((folder / "trs.json").string(),
+                         grading::mistake_frames_text({{"trs.2.png", {late}}}));
+    fw::test::check_mentions(fw::test::thrown([&] { load(); }),
+                             {"reference/mistakes/trs.json", "no image trs.2.png"});
+    fw::test::write_text((folder / "trs.json").string(), "{\"frames\": [");
+    fw::test::check_mentions(fw::test::thrown([&] { load(); }), {"trs.json", "not valid JSON"});
+    fs::remove(folder / "trs.json");
+    fw::test::write_text((folder / "renamed.json").string(),
+                         grading::mistake_frames_text({{"trs.1.png", {late}}}));
+    fw::test::check_mentions(fw::test::thrown([&] { load(); }),
+                             {"renamed.json", "no checkpoint renamed"});
+}
+
 TEST_CASE("junit.xml has a test case per checkpoint and escapes what the checks printed") {
     Fixture f;
     const std::string xml = read_text(f.dir + "/junit.xml");

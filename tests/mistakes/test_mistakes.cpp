@@ -2,11 +2,21 @@
 // file), each applied alone to the solution inside a solution block, built
 // and graded on its lab. Each must lose points on a check of a visible
 // checkpoint that the solution passes, so a student sees it before the
-// deadline; a mistake in a unit-checked function that names its kind
-// ("named") must be named in the grader's output: "Likely mistake (ID)", or,
-// for "frame:NAME", "Your frame is the one checkpoint NAME expects" (a frame
-// that is another checkpoint's expected image). The table counts, besides,
-// the caught mistakes the grader diagnoses at all, whether named or not.
+// deadline. What `course grade` prints must name it where the grader can: a
+// mistake that names its kind ("named") as "Likely mistake (ID)", or, for
+// "frame:NAME", as "Your frame is the one checkpoint NAME expects" (a frame
+// that is another checkpoint's expected image); any other that fails a
+// visible image check by its own id, as the known mistake whose frame the
+// student's frame is ("Your frame is the one a known mistake draws (ID)",
+// grading/judge/known_mistakes.hpp). The table counts the named ones, and
+// among them those only image, probe or stat checks catch, and lists the
+// rest (for them the terminal shows a unit check's first failing case, a
+// probe's colour or a compiler's message).
+//
+// MISTAKES_RECORD=1 writes those frames: every frame of a mistake that fails
+// a visible image check (mistake_frames.hpp) goes to
+// labs/NN_name/reference/mistakes/ of the source tree, for each lab whose
+// mistakes all ran; commit them with the change that made them.
 //
 // The list, kMistakesJson in mistakes.hpp: {"mistakes": [{"id", "lab"
 // (folder, NN_name), "file" (repository path), "find" (exact text: once in
@@ -20,7 +30,7 @@
 // C++ mistakes go into one copy of the tree, built once and rebuilt
 // incrementally per mistake.
 //
-// Environment: MISTAKES_SKIP_NAMED=1 leaves out the "Likely mistake" check;
+// Environment: MISTAKES_SKIP_NAMED=1 leaves out the check that each is named;
 // MISTAKES_ONLY=WORD,... runs only the mistakes whose id or lab contains one
 // of the words.
 #include <algorithm>
@@ -31,6 +41,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -39,6 +50,7 @@
 #include "framework/text.hpp"
 #include "grading/release/release.hpp"
 #include "tests/grading/tree_support.hpp"
+#include "tests/mistakes/mistake_frames.hpp"
 #include "tests/mistakes/mistakes.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -65,6 +77,9 @@ const std::set<std::string> kNamedIds = {"transpose",
 
 constexpr size_t kMinMistakes = 40, kMinPerLab = 4;
 constexpr const char* kFramePrefix = "frame:";
+constexpr const char* kRecordHint =
+    "; if its frames changed, record them again: MISTAKES_RECORD=1 ctest --preset default -R "
+    "'^mistakes$'";
 
 // What the grader's output says for the named mistake `named`.
 std::string named_sentence(const std::string& named) {
@@ -74,9 +89,10 @@ std::string named_sentence(const std::string& named) {
     return "Likely mistake (" + named + ")";
 }
 
-// The sentences with which the grader diagnoses a failed check.
-const char* const kDiagnoses[] = {"Likely mistake (", "Your frame is the one checkpoint",
-                                  "Your function returned"};
+bool env_is(const char* name, const char* value) {
+    const char* v = std::getenv(name);
+    return v && std::string(v) == value;
+}
 
 struct Mistake {
     std::string id, lab, file, find, replace, why, named;
@@ -142,22 +158,36 @@ std::string points_text(double p) {
     return buf;
 }
 
-// Whether some entry of `lab` (its id, as results.json names it) in `g`
-// says "Likely mistake (ID)".
-bool names_mistake(const Grade& g, const std::string& lab, const std::string& id) {
-    const std::string needle = named_sentence(id);
-    for (const auto& [name, e] : g.entries)
-        if (name.rfind(lab + " / ", 0) == 0 && e.output.find(needle) != std::string::npos)
-            return true;
+// Whether `text` names the known mistake `id`: "draws (ID)", or ID in the
+// list of "draw (ID, ID2)".
+bool names_known(const std::string& text, const std::string& id) {
+    for (const char* lead : {"known mistake draws (", "known mistakes draw ("})
+        for (size_t at = text.find(lead); at != std::string::npos; at = text.find(lead, at + 1)) {
+            const size_t open = text.find('(', at) + 1, close = text.find(')', open);
+            std::stringstream ids(text.substr(open, close - open));
+            for (std::string one; std::getline(ids, one, ',');)
+                if (one.substr(one.find_first_not_of(' ')) == id) return true;
+        }
     return false;
 }
 
-// Whether some entry of `lab` in `g` carries a diagnosis (kDiagnoses).
-bool diagnosed(const Grade& g, const std::string& lab) {
-    for (const auto& [name, e] : g.entries)
-        if (name.rfind(lab + " / ", 0) == 0)
-            for (const char* d : kDiagnoses)
-                if (e.output.find(d) != std::string::npos) return true;
+// Whether the terminal output of `g` (course grade's, which prints each
+// failed check's diagnosis) names mistake `m`: by its kind (named_sentence)
+// or by its id.
+bool names_mistake(const Grade& g, const std::string& named, const std::string& id) {
+    return (!named.empty() && g.output.find(named_sentence(named)) != std::string::npos) ||
+           names_known(g.output, id);
+}
+
+// Whether a check of `lab` whose title starts with `kind` ("unit", "image")
+// fails in `g` (its entries are named "LAB / CHECKPOINT / TITLE"), and with
+// `visible`, on a visible checkpoint.
+bool check_fails(const Grade& g, const std::string& lab, const std::string& kind,
+                 bool visible = false) {
+    for (const std::string& name : g.failed)
+        if (name.rfind(lab + " / ", 0) == 0 && name.find(" / " + kind + " ") != std::string::npos &&
+            (!visible || g.entries.at(name).visibility == "visible"))
+            return true;
     return false;
 }
 
@@ -169,8 +199,9 @@ std::string lab_id(const std::string& dir) {
 }
 
 struct LabTally {
-    size_t mistakes = 0, caught = 0, named = 0, named_found = 0, diagnosed = 0;
+    size_t mistakes = 0, caught = 0, named = 0, image_only = 0, image_only_named = 0;
     double points = 0.0;
+    std::vector<std::string> unnamed;  // caught, not named: the terminal says what differs
 };
 
 }  // namespace
@@ -178,8 +209,8 @@ struct LabTally {
 TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
     const fs::path source = fw::test::source_dir(), dir = fw::test::out_dir();
     const std::string course = fw::test::bin_dir() + "/course", lab = fw::test::bin_dir() + "/lab";
-    const bool skip_named = std::getenv("MISTAKES_SKIP_NAMED") &&
-                            std::string(std::getenv("MISTAKES_SKIP_NAMED")) == "1";
+    const bool skip_named = env_is("MISTAKES_SKIP_NAMED", "1");
+    const bool record = env_is("MISTAKES_RECORD", "1");
     const std::vector<std::string> labs = lab_dirs(source);
     const std::vector<Mistake> all = read_mistakes(kMistakesJson);
     if (all.empty()) {
@@ -234,6 +265,8 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         build_tree(tree, "lab");
     }
 
+    std::optional<mistake_frames::Recorder> recorder;
+    if (record) recorder.emplace(source, dir / "frames");
     std::map<std::string, LabTally> tally;
     std::string report;
     for (const Mistake& m : mistakes) {
@@ -248,7 +281,7 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
 
         std::string result;
         double lost = 0.0;
-        bool caught = false, named_found = false, diagnosis = false;
+        bool caught = false, named = false, image_only = false, image_failed = false;
         if (!shader && !rebuild_tree(tree, "lab")) {
             result = "DOES NOT BUILD";
         } else {
@@ -272,8 +305,16 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
             else
                 result = hidden ? "SLIPPED: only " + std::to_string(hidden) + " hidden entries lose"
                                 : "SLIPPED: full marks";
-            if (caught && !m.named.empty()) named_found = names_mistake(g, lab_id(m.lab), m.named);
-            diagnosis = caught && diagnosed(g, lab_id(m.lab));
+            named = caught && names_mistake(g, m.named, m.id);
+            image_only = caught && !check_fails(g, lab_id(m.lab), "unit");
+            // A frame to know it by: a visible image check failed on a
+            // frame the lab rendered (not for want of one).
+            image_failed = check_fails(g, lab_id(m.lab), "image", /*visible=*/true) &&
+                           g.status[lab_id(m.lab)] == "ok";
+            if (recorder) {
+                const size_t frames = recorder->add(m.lab, dir / "mistake", {m.id, m.why});
+                result += "; " + std::to_string(frames) + " frames kept";
+            }
             for (const auto& [id, status] : g.status)
                 if (status != "ok") result += " [" + id + ": " + status + "]";
         }
@@ -282,15 +323,14 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         LabTally& t = tally[m.lab];
         ++t.mistakes;
         t.caught += caught;
-        t.diagnosed += diagnosis;
         t.points += lost;
-        if (!m.named.empty()) {
-            ++t.named;
-            t.named_found += named_found;
-            result += named_found ? "; named " + m.named : "; NOT named " + m.named;
-        } else if (diagnosis) {
-            result += "; diagnosed";
-        }
+        t.named += named;
+        t.image_only += image_only;
+        t.image_only_named += image_only && named;
+        if (caught)
+            result += std::string(named ? "; named" : "; not named") +
+                      (image_only ? " (image only)" : "");
+        if (caught && !named) t.unnamed.push_back(m.id);
         char line[1024];
         std::snprintf(line, sizeof line, "%-34s %-18s %s (%.1f s)\n", m.id.c_str(), m.lab.c_str(),
                       result.c_str(), seconds_since(start));
@@ -299,34 +339,55 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         report += line;
         CHECK_MESSAGE(caught, m.id << " (" << m.why << "): " << result
                                    << "; add a visible checkpoint or probe that it fails");
-        if (!m.named.empty() && !skip_named)
-            CHECK_MESSAGE(named_found, m.id << ": no check of lab " << m.lab << " says \""
-                                            << named_sentence(m.named) << "\"");
+        // One named by its kind must be; one that fails a visible image
+        // check must be, since its frame is known (recorded).
+        if (caught && !skip_named && !record && (!m.named.empty() || image_failed))
+            CHECK_MESSAGE(named, m.id << ": the terminal of course grade does not say \""
+                                      << (m.named.empty() ? "known mistake draws (" + m.id + ")"
+                                                          : named_sentence(m.named))
+                                      << "\"" << std::string(m.named.empty() ? kRecordHint : ""));
+    }
+    if (recorder) {
+        // Only the labs whose mistakes all ran: a lab's folder is written whole.
+        std::set<std::string> complete;
+        for (const auto& [l, n] : per_lab)
+            if (tally.count(l) && tally[l].mistakes == n) complete.insert(l);
+        const size_t images = recorder->write(source, complete);
+        MESSAGE("MISTAKES_RECORD=1: " << images << " frames written for " << complete.size()
+                                      << " labs under labs/*/reference/mistakes/");
     }
 
     // The table: per lab, the mistakes tried, those caught by a visible
-    // check, the visible points they lost in all, the named ones found and
-    // the caught ones the grader diagnoses (a named mistake, a frame that is
-    // another checkpoint's, a NaN: image-only mistakes included).
+    // check, the visible points they lost in all, the caught ones the grader
+    // names, and of those caught only by image, probe or stat checks (no
+    // unit check fails) the ones it names.
     char line[256];
     std::string table;
-    std::snprintf(line, sizeof line, "%-18s %8s %6s %11s %6s %9s\n", "lab", "mistakes", "caught",
-                  "points lost", "named", "diagnosed");
+    std::snprintf(line, sizeof line, "%-18s %8s %6s %11s %6s %10s\n", "lab", "mistakes", "caught",
+                  "points lost", "named", "image-only");
     table += line;
     LabTally sum;
+    auto fraction = [](size_t a, size_t b) { return std::to_string(a) + "/" + std::to_string(b); };
     auto row = [&](const std::string& name, const LabTally& t) {
-        std::snprintf(line, sizeof line, "%-18s %8zu %6zu %11s %6s %9s\n", name.c_str(), t.mistakes,
-                      t.caught, points_text(t.points).c_str(),
-                      (std::to_string(t.named_found) + "/" + std::to_string(t.named)).c_str(),
-                      (std::to_string(t.diagnosed) + "/" + std::to_string(t.caught)).c_str());
+        std::snprintf(line, sizeof line, "%-18s %8zu %6zu %11s %6s %10s\n", name.c_str(),
+                      t.mistakes, t.caught, points_text(t.points).c_str(),
+                      fraction(t.named, t.caught).c_str(),
+                      fraction(t.image_only_named, t.image_only).c_str());
         table += line;
     };
     for (const auto& [l, t] : tally) {
         row(l, t);
         sum.mistakes += t.mistakes, sum.caught += t.caught, sum.points += t.points;
-        sum.named += t.named, sum.named_found += t.named_found, sum.diagnosed += t.diagnosed;
+        sum.named += t.named, sum.image_only += t.image_only;
+        sum.image_only_named += t.image_only_named;
+        sum.unnamed.insert(sum.unnamed.end(), t.unnamed.begin(), t.unnamed.end());
     }
     row("total", sum);
+    if (!sum.unnamed.empty())
+        table +=
+            "not named (the terminal shows where they differ: a unit check's first failing "
+            "case, a probe's colour, a compiler's message): " +
+            fw::join(sum.unnamed, ", ") + "\n";
     std::printf("\n%s%s", report.c_str(), table.c_str());
     MESSAGE("mistakes, each alone on the solution:\n"
             << report << "\n"
