@@ -103,35 +103,28 @@ const ReferenceImages::Entry& ReferenceImages::entry(const std::string& relative
     return *entries_.emplace(relative, std::move(made)).first->second;
 }
 
-const fw::Image* ReferenceImages::image_at(const std::string& relative) {
-    return entry(relative).image.get();
-}
-
-const ReferenceImages::Summary* ReferenceImages::summary_at(const std::string& relative) {
-    const Entry& e = entry(relative);
-    return e.image ? &e.summary : nullptr;
-}
-
 const fw::Image* ReferenceImages::get(const std::string& checkpoint) {
-    return image_at(lab_.reference(checkpoint));
+    return entry(lab_.reference(checkpoint)).image.get();
 }
 
-const ReferenceImages::Summary* ReferenceImages::summary(const std::string& checkpoint) {
-    return summary_at(lab_.reference(checkpoint));
+bool ReferenceImages::matches(const std::string& relative, const fw::Image& frame,
+                              const Summary& mine, const fw::CompareOptions& options) {
+    const Entry& e = entry(relative);
+    return e.image && close_summaries(mine, e.summary) &&
+           fw::compare_images(frame, *e.image, options).passed;
 }
 
-std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
-                                         const fw::Image& frame, const fw::CompareOptions& options,
-                                         ReferenceImages& references) {
-    const ReferenceImages::Summary mine = ReferenceImages::summarise(frame);
+namespace {
+
+std::string checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                const fw::Image& frame, const ReferenceImages::Summary& mine,
+                                const fw::CompareOptions& options, ReferenceImages& references) {
     const std::vector<fw::Checkpoint>& all = lab.file.checkpoints;
     for (size_t k = 0; k < all.size(); ++k) {
         const fw::Checkpoint& other = all[k];
-        if (other.name == checkpoint.name || !has_image_check(lab, k)) continue;
-        const ReferenceImages::Summary* theirs = references.summary(other.name);
-        if (!theirs || !close_summaries(mine, *theirs)) continue;
-        const fw::Image* reference = references.get(other.name);
-        if (!reference || !fw::compare_images(frame, *reference, options).passed) continue;
+        if (other.name == checkpoint.name || !has_image_check(lab, k) ||
+            !references.matches(lab.reference(other.name), frame, mine, options))
+            continue;
         const std::vector<std::string> differ = differences(checkpoint, other);
         const std::string text = "Your frame is the one checkpoint " + other.name + " expects";
         if (differ.empty())
@@ -155,21 +148,43 @@ std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoin
     return "";
 }
 
+std::string mistake_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                             const fw::Image& frame, const ReferenceImages::Summary& mine,
+                             const fw::CompareOptions& options, ReferenceImages& references) {
+    const auto known = lab.mistake_frames.find(checkpoint.name);
+    if (known == lab.mistake_frames.end()) return "";
+    for (const MistakeFrame& m : known->second)
+        if (references.matches(mistake_frames_dir(lab.dir) + "/" + m.image, frame, mine, options))
+            return known_mistake_sentence(m);
+    return "";
+}
+
+}  // namespace
+
+std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                         const fw::Image& frame, const fw::CompareOptions& options,
+                                         ReferenceImages& references) {
+    return checkpoint_sentence(lab, checkpoint, frame, ReferenceImages::summarise(frame), options,
+                               references);
+}
+
 std::string known_mistake_frame_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
                                          const fw::Image& frame, const fw::CompareOptions& options,
                                          ReferenceImages& references) {
-    const auto known = lab.mistake_frames.find(checkpoint.name);
-    if (known == lab.mistake_frames.end()) return "";
+    return mistake_sentence(lab, checkpoint, frame, ReferenceImages::summarise(frame), options,
+                            references);
+}
+
+std::string failed_frame_diagnosis(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                   const fw::Image& frame, const fw::CompareOptions& options,
+                                   ReferenceImages& references) {
     const ReferenceImages::Summary mine = ReferenceImages::summarise(frame);
-    for (const MistakeFrame& m : known->second) {
-        const std::string path = mistake_frames_dir(lab.dir) + "/" + m.image;
-        const ReferenceImages::Summary* theirs = references.summary_at(path);
-        if (!theirs || !close_summaries(mine, *theirs)) continue;
-        const fw::Image* image = references.image_at(path);
-        if (image && fw::compare_images(frame, *image, options).passed)
-            return known_mistake_sentence(m);
-    }
-    return "";
+    std::vector<std::string> sentences;
+    for (const std::string& s :
+         {mistake_sentence(lab, checkpoint, frame, mine, options, references),
+          checkpoint_sentence(lab, checkpoint, frame, mine, options, references)})
+        if (!s.empty()) sentences.push_back(s);
+    return fw::join(sentences, "\n");
 }
 
 }  // namespace grading

@@ -36,18 +36,20 @@ public:
         std::vector<float> cells;
     };
     static Summary summarise(const fw::Image& image);
-    const Summary* summary(const std::string& checkpoint);
-    // The same for any image of the lab's reference folder, by its path
-    // relative to the repository (a known mistake's frame).
-    const fw::Image* image_at(const std::string& relative);
-    const Summary* summary_at(const std::string& relative);
+
+    // Whether `frame` (its summary `mine`) passes a comparison under
+    // `options` with the image at `relative` (a path in the repository: a
+    // checkpoint's reference, a known mistake's frame); false when that
+    // image is missing or unreadable. The summaries rule most pairs out.
+    bool matches(const std::string& relative, const fw::Image& frame, const Summary& mine,
+                 const fw::CompareOptions& options);
 
 private:
     struct Entry {
         std::unique_ptr<fw::Image> image;  // null when missing or unreadable
         Summary summary;
     };
-    const Entry& entry(const std::string& relative);
+    const Entry& entry(const std::string& relative);  // by its path in the repository
 
     const LabData& lab_;
     std::mutex mutex_;
@@ -68,5 +70,12 @@ std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoin
 std::string known_mistake_frame_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
                                          const fw::Image& frame, const fw::CompareOptions& options,
                                          ReferenceImages& references);
+
+// What a judge prints under a failed image check: the known mistake's
+// sentence first (it says what the code does), then the other checkpoint's
+// (which parameters it mixes up), a line each; empty when neither matches.
+std::string failed_frame_diagnosis(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                   const fw::Image& frame, const fw::CompareOptions& options,
+                                   ReferenceImages& references);
 
 }  // namespace grading

@@ -166,16 +166,8 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
         fw::write_png(out_dir + "/" + r.difference, c.difference);
     }
     std::string where = c.passed ? "" : describe_difference(*image, reference, c);
-    if (!c.passed && !c.size_mismatch) {
-        // The known mistake first: it says what the code does; another
-        // checkpoint's image says only which parameters it mixes up.
-        std::vector<std::string> sentences;
-        for (const std::string& s :
-             {known_mistake_frame_sentence(lab, cp, *image, opt, references),
-              matching_checkpoint_sentence(lab, cp, *image, opt, references)})
-            if (!s.empty()) sentences.push_back(s);
-        r.diagnosis = fw::join(sentences, "\n");
-    }
+    if (!c.passed && !c.size_mismatch)
+        r.diagnosis = failed_frame_diagnosis(lab, cp, *image, opt, references);
     verdict(r, c.passed,
             expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where) +
                 (r.diagnosis.empty() ? "" : "\n" + r.diagnosis));

@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
@@ -70,9 +69,7 @@ MistakeFrames read_mistake_frames(const std::string& root, const std::string& la
             throw fw::UsageError(file + ": the lab has no checkpoint " + checkpoint +
                                  " (record the frames again: MISTAKES_RECORD=1)");
         std::ifstream in(e.path());
-        std::stringstream text;
-        text << in.rdbuf();
-        const json doc = json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
+        const json doc = json::parse(in, nullptr, /*allow_exceptions=*/false);
         if (doc.is_discarded()) throw fw::UsageError(file + ": not valid JSON");
         out[checkpoint] = parse_frames(doc, folder, file);
     }

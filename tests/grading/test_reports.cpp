@@ -385,6 +385,27 @@ TEST_CASE("a failed frame that a known mistake draws is named by the mistake's i
           "Your frame is the one known mistakes draw (transforms-late, transforms-blank): code "
           "that multiplies on the wrong side, or code that draws nothing.");
 
+    // A frame that is a known mistake's and another checkpoint's expected
+    // image: the known mistake first, then the checkpoint, a line each.
+    fw::write_png((folder / "trs.2.png").string(), srt);
+    fw::test::write_text(
+        (folder / "trs.json").string(),
+        grading::mistake_frames_text({{"trs.1.png", {late}}, {"trs.2.png", {blank}}}));
+    const grading::LabData both = load();
+    const fw::Checkpoint& trs2 =
+        both.file.checkpoints.at(static_cast<size_t>(trs - lab.file.checkpoints.data()));
+    grading::ReferenceImages again(both);
+    const std::string checkpoint_words =
+        grading::matching_checkpoint_sentence(both, trs2, srt, {}, again);
+    CHECK(checkpoint_words.find("checkpoint srt expects") != std::string::npos);
+    CHECK(grading::failed_frame_diagnosis(both, trs2, srt, {}, again) ==
+          "Your frame is the one a known mistake draws (transforms-blank): code that draws "
+          "nothing.\n" +
+              checkpoint_words);
+    CHECK(grading::failed_frame_diagnosis(both, trs2, black, {}, again) ==
+          grading::known_mistake_frame_sentence(both, trs2, black, {}, again));
+    fs::remove(folder / "trs.2.png");
+
     // The files are validated with the checkpoints, each error naming the file.
     fw::test::write_text((folder / "trs.json").string(),
                          grading::mistake_frames_text({{"trs.2.png", {late}}}));
