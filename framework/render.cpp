@@ -27,6 +27,13 @@ Frame scene_frame(const LabInfo& info, const Frame& frame) {
     return {v.width, v.height, frame.time};
 }
 
+void reset_write_state() {
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFFu);
+}
+
 LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
     : registered_(lab), context_(std::move(context)), programs_(lab.info.dir), lab_(lab.create()) {
     enable_debug_output();
@@ -38,7 +45,9 @@ LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
 
 LabRenderer::~LabRenderer() = default;
 
-// A framebuffer of the frame's size, bound and cleared as Lab::draw expects.
+// A framebuffer of the frame's size, bound and cleared as Lab::draw expects:
+// colour black, depth 1, stencil 0. glClear obeys the write masks and the
+// scissor test, which a lab may have left set: both are reset first.
 void LabRenderer::begin_frame(int width, int height) {
     if (!framebuffer_ || framebuffer_->width() != width || framebuffer_->height() != height) {
         framebuffer_.reset();
@@ -46,9 +55,11 @@ void LabRenderer::begin_frame(int width, int height) {
             width, height, "offscreen " + std::to_string(width) + "x" + std::to_string(height)});
     }
     framebuffer_->bind();
+    reset_write_state();
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
 // The lab's draw inside the frame's queries, finished by GL.

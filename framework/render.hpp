@@ -29,6 +29,12 @@ struct RenderOutput {
     nlohmann::json stats;  // as FrameResult::stats
 };
 
+// The state that glClear and glBlitFramebuffer obey, as GL starts: the
+// scissor test off, and colour, depth and stencil writes on. A lab may leave
+// them otherwise; the renderer and the window set them back before a clear
+// or a copy.
+void reset_write_state();
+
 class LabRenderer {
 public:
     // Creates the lab and calls its init(); throws what init throws.
@@ -38,7 +44,8 @@ public:
     LabRenderer& operator=(const LabRenderer&) = delete;
 
     // One frame at width x height into framebuffer(), which is made again
-    // when the size changes, bound and cleared to (0, 0, 0, 1) and depth 1.
+    // when the size changes, bound and cleared to (0, 0, 0, 1), depth 1 and
+    // stencil 0, with every write mask open and the scissor test off.
     // Throws UsageError for a size of zero or above the GL limit, and, with
     // the frame left cleared, for parameters the lab rejects; what the lab's
     // draw throws, or a GL error it left, is thrown with the frame as far as

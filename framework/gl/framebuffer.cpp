@@ -52,7 +52,9 @@ Framebuffer::Framebuffer(const FramebufferDesc& desc)
                size_limit(GL_MAX_FRAMEBUFFER_HEIGHT, "GL_MAX_FRAMEBUFFER_HEIGHT"), label_);
 
     color_ = attachment(width_, height_, GL_RGBA8, label_ + " colour");
-    depth_ = attachment(width_, height_, GL_DEPTH_COMPONENT32F, label_ + " depth");
+    // Depth and stencil in one texture: 32-bit float depth (the precision the
+    // depth probes rely on) and 8 stencil bits, on every backend alike.
+    depth_ = attachment(width_, height_, GL_DEPTH32F_STENCIL8, label_ + " depth-stencil");
 
     GLuint id = 0;
     glGenFramebuffers(1, &id);
@@ -62,14 +64,14 @@ Framebuffer::Framebuffer(const FramebufferDesc& desc)
         ScopedBinding bind = bind_framebuffer_scoped(GL_DRAW_FRAMEBUFFER, id);
         glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
                                color_.id(), 0);
-        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(),
-                               0);
+        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                               depth_.id(), 0);
         status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
     }
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw Error("framebuffer '" + label_ + "' is incomplete: " + gl_enum_name(status) +
-                    " (RGBA8 colour + DEPTH_COMPONENT32F depth, " + std::to_string(width_) + "x" +
-                    std::to_string(height_) + ")");
+                    " (RGBA8 colour + DEPTH32F_STENCIL8 depth-stencil, " + std::to_string(width_) +
+                    "x" + std::to_string(height_) + ")");
     set_object_label(GL_FRAMEBUFFER, id, label_);
 }
 

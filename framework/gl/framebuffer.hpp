@@ -1,9 +1,10 @@
 // fw::Framebuffer: an offscreen render target with an RGBA8 colour texture
-// and a DEPTH_COMPONENT32F depth texture, read back as fw::Image/DepthImage.
+// and a DEPTH32F_STENCIL8 depth-stencil texture (32-bit float depth, 8 stencil
+// bits), read back as fw::Image/DepthImage.
 //
 //   fw::Framebuffer fb({512, 512, "offscreen"});
 //   fb.bind();                        // draw into it; the viewport is set to 512x512
-//   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+//   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 //   ... draw ...
 //   fw::Image img = fb.read_color();  // img.at(x, y) is window pixel (x, y), y up
 #pragma once

@@ -127,6 +127,8 @@ std::string window_title(const LabInfo& info) {
 // The renderer's frame copied into the window's back buffer; black when
 // there is none yet.
 void blit_to_window(const Framebuffer* frame, int width, int height) {
+    // A scissor rectangle the lab left would clip the copy.
+    reset_write_state();
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     if (frame) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, frame->id());

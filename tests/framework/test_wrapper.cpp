@@ -369,6 +369,44 @@ TEST_CASE("framebuffer: a plane at NDC z = 0.5 reads back window depth 0.75") {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+TEST_CASE("framebuffer: 8 stencil bits mask a draw to where the stencil was set") {
+    fw::Framebuffer fb({32, 32, "stencil"});
+    fb.bind();
+    GLint bits = 0;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
+    CHECK(bits == 8);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    fw::Program prog = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});
+    prog.use();
+    // Stencil 200 on the left half (a value above 1 needs more than one bit);
+    // colour writes off while it is set.
+    std::vector<ColorVertex> left = quad(-1, -1, 0, 1, 0, kRed);
+    fw::Buffer left_vbo = fw::Buffer::from(left, GL_ARRAY_BUFFER, "stencil mask");
+    fw::VertexArray mask({&left_vbo, color_layout(), nullptr, GL_UNSIGNED_INT, "stencil mask"});
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 200, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    mask.draw(GL_TRIANGLES, 6);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // Green over the whole frame, only where the stencil is 200.
+    std::vector<ColorVertex> all = quad(-1, -1, 1, 1, 0, kGreen);
+    fw::Buffer all_vbo = fw::Buffer::from(all, GL_ARRAY_BUFFER, "stencil fill");
+    fw::VertexArray fill({&all_vbo, color_layout(), nullptr, GL_UNSIGNED_INT, "stencil fill"});
+    glStencilFunc(GL_EQUAL, 200, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    fill.draw(GL_TRIANGLES, 6);
+    glDisable(GL_STENCIL_TEST);
+    fw::check_gl("stencil draws");
+    const fw::Image img = fb.read_color();
+    bool pass = fw::test::probe_rgb(img, 4, 16, kGreen);
+    pass = fw::test::probe_rgb(img, 27, 16, kBlack) && pass;
+    CHECK(pass);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 TEST_CASE("framebuffer: a size of zero or above the GL limit names the field and the limit") {
     const auto zero = [] { fw::Framebuffer fb({0, 16, "zero"}); };
     check_mentions(thrown<fw::UsageError>(zero),
