@@ -49,8 +49,13 @@ Texture2D::Texture2D(const Texture2DDesc& desc)
         throw UsageError("Texture2DDesc.height must be 1 to GL_MAX_TEXTURE_SIZE (" +
                          std::to_string(max_size) + "), not " + std::to_string(desc.height) +
                          where);
-    const bool mipmaps = uses_mipmaps(desc.min_filter);
-    levels_ = mipmaps ? full_mip_chain(width_, height_) : 1;
+    build_mipmaps_ = desc.levels == 0 && uses_mipmaps(desc.min_filter);
+    const int chain = full_mip_chain(width_, height_);
+    if (desc.levels < 0 || desc.levels > chain)
+        throw UsageError("Texture2DDesc.levels must be 0 (as min_filter needs) or 1 to " +
+                         std::to_string(chain) + " for " + std::to_string(width_) + "x" +
+                         std::to_string(height_) + ", not " + std::to_string(desc.levels) + where);
+    levels_ = desc.levels > 0 ? desc.levels : build_mipmaps_ ? chain : 1;
 
     GLuint id = 0;
     glGenTextures(1, &id);
@@ -95,7 +100,7 @@ void Texture2D::bind(GLuint unit) const {
 
 void Texture2D::update(const void* data, GLenum data_format, GLenum data_type) {
     if (id() == 0) throw UsageError("Texture2D::update on an empty Texture2D");
-    upload(id(), width_, height_, data, data_format, data_type, levels_ > 1);
+    upload(id(), width_, height_, data, data_format, data_type, build_mipmaps_);
 }
 
 }  // namespace fw

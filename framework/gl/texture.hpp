@@ -26,6 +26,10 @@ struct Texture2DDesc {
     GLenum min_filter = GL_LINEAR;        // a *_MIPMAP_* filter also builds mipmaps
     GLenum mag_filter = GL_LINEAR;
     GLenum wrap = GL_CLAMP_TO_EDGE;  // for both s and t
+    // Storage levels: 0, the full chain for a *_MIPMAP_* min_filter (built
+    // from the data) and else 1; n > 0, n levels (at most the full chain),
+    // level 0 from the data and the others left for glGenerateMipmap.
+    int levels = 0;
     std::string label;
 };
 
@@ -47,13 +51,15 @@ public:
     // glActiveTexture(GL_TEXTURE0 + unit); glBindTexture(GL_TEXTURE_2D, id()).
     void bind(GLuint unit) const;
 
-    // Replaces the whole level 0 (then rebuilds mipmaps, if any).
+    // Replaces the whole level 0 (then rebuilds the mipmaps of a *_MIPMAP_*
+    // min_filter given at creation).
     void update(const void* data, GLenum data_format = GL_RGBA,
                 GLenum data_type = GL_UNSIGNED_BYTE);
 
 private:
     detail::Handle handle_;
     int width_ = 0, height_ = 0, levels_ = 1;
+    bool build_mipmaps_ = false;
     GLenum internal_format_ = GL_RGBA8;
     std::string label_;
 };

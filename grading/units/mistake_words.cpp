@@ -55,6 +55,10 @@ const char* plain_cause(Mistake m) {
             return " is the expected one with a direction divided by its length squared "
                    "(dot(v, v)) instead of its length: normalising divides by "
                    "sqrt(dot(v, v)), or use glm::normalize; check the division";
+        case Mistake::OffByOne:
+            return " is the expected number plus or minus 1: a count or a level that starts at "
+                   "1 where it starts at 0 (mipmap level 0 is the full-size texture), or the "
+                   "other way round; check where your count starts";
         case Mistake::ReversedProduct:
             return " is the product of the right matrices in reverse order: with column "
                    "vectors (p' = M p) the matrix next to the point acts first, so A * B "

@@ -133,6 +133,7 @@ struct Checker {
             flipped_rows(s.rows);
         }
         if (s.kind == ValueShape::Kind::Vector) unnormalised_vector();
+        if (expected.is_number() && observed.is_number()) off_by_one();
         std::vector<int> degrees;
         for (size_t i = 0; i < ref.domains.size(); ++i)
             if (ref.domains[i].degrees) degrees.push_back(static_cast<int>(i));
@@ -154,6 +155,13 @@ struct Checker {
             for (bool with_last : {true, false})
                 if (matches(rows_negated(expected, rows, with_last)))
                     return add(Mistake::FlippedAxis, -1, rows);
+    }
+
+    // A number expected, that number plus or minus 1 observed: a count or a
+    // level started at 1 where it starts at 0, or the other way.
+    void off_by_one() {
+        for (const double step : {1.0, -1.0})
+            if (matches(json(expected.get<double>() + step))) return add(Mistake::OffByOne, -1);
     }
 
     // A unit vector expected, a longer or shorter one observed in its direction.
@@ -214,6 +222,8 @@ std::string_view mistake_id(Mistake mistake) {
             return "last-column-for-diagonal";
         case Mistake::LengthSquared:
             return "length-squared";
+        case Mistake::OffByOne:
+            return "off-by-one";
         case Mistake::NotNormalised:
             return "not-normalised";
     }

@@ -23,7 +23,7 @@ namespace grading {
 // "inverse", "reversed-product", "radians-for-degrees",
 // "degrees-for-radians", "flipped-angle", "translation-in-bottom-row",
 // "not-normalised", "flipped-axis", "last-column-for-diagonal",
-// "length-squared".
+// "length-squared", "off-by-one".
 std::string_view mistake_id(Mistake mistake);
 
 // One failing case of a unit check.

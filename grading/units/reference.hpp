@@ -151,6 +151,7 @@ enum class Mistake {
     FlippedAxis,             // "flipped-axis": a basis vector (rows of the matrix) negated
     LastColumnForDiagonal,   // "last-column-for-diagonal": diagonal entries put in the last column
     LengthSquared,           // "length-squared": divided by a length squared, not the length
+    OffByOne,                // "off-by-one": a number 1 more or 1 less than expected
 };
 
 // What the function returns when written with one mistake, computed by

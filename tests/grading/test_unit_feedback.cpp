@@ -223,6 +223,7 @@ TEST_CASE("mistake IDs are the stable names the reports print") {
     CHECK(grading::mistake_id(Mistake::FlippedAxis) == "flipped-axis");
     CHECK(grading::mistake_id(Mistake::LastColumnForDiagonal) == "last-column-for-diagonal");
     CHECK(grading::mistake_id(Mistake::LengthSquared) == "length-squared");
+    CHECK(grading::mistake_id(Mistake::OffByOne) == "off-by-one");
 }
 
 TEST_CASE("each mistake is recognised against the labs' references") {
@@ -337,6 +338,18 @@ TEST_CASE("each mistake is recognised against the labs' references") {
                   b[1] = json::array({shorter.x, shorter.y, shorter.z});
                   return unnormalised_rotation(b);
               }) == Ids{"length-squared"});
+    }
+    SUBCASE("off-by-one: a level of detail counted from 1") {
+        const auto plus_one = [](const json&, const json& e) {
+            return json(e.get<double>() + 1.0);
+        };
+        CHECK(named("texture-mapping", "level_of_detail", 1e-4, plus_one) == Ids{"off-by-one"});
+        const auto minus_one = [](const json&, const json& e) {
+            return json(e.get<double>() - 1.0);
+        };
+        CHECK(named("texture-mapping", "level_of_detail", 1e-4, minus_one) == Ids{"off-by-one"});
+        const auto doubled = [](const json&, const json& e) { return json(2.0 * e.get<double>()); };
+        CHECK(named("texture-mapping", "level_of_detail", 1e-4, doubled).empty());
     }
     SUBCASE("not-normalised: a vector result of another length in the right direction") {
         const ReferenceUnit ref =

@@ -73,7 +73,8 @@ const std::set<std::string> kNamedIds = {"transpose",
                                          "not-normalised",
                                          "flipped-axis",
                                          "last-column-for-diagonal",
-                                         "length-squared"};
+                                         "length-squared",
+                                         "off-by-one"};
 
 constexpr size_t kMinMistakes = 40, kMinPerLab = 4;
 constexpr const char* kFramePrefix = "frame:";

@@ -1,6 +1,6 @@
 // "Adding a lab" (README.md) taken at its word: in a copy of this repository,
-// lab 0 is copied under a new number and name (labs/07_warmup/ and
-// shaders/07_warmup/, its C++ namespace renamed so that both labs link into
+// lab 0 is copied under a new number and name (labs/90_warmup/ and
+// shaders/90_warmup/, its C++ namespace renamed so that both labs link into
 // one `lab`), and nothing else is touched. The new lab must then list,
 // render, grade with full marks, appear in the student release and pass its
 // own tests. The copy builds a tree of its own (minutes), so the test has
@@ -65,27 +65,27 @@ void copy_repository(const fs::path& tree) {
     REQUIRE(changes(tree).empty());
 }
 
-// Copies lab 0 to labs/07_warmup and shaders/07_warmup, renaming its C++
+// Copies lab 0 to labs/90_warmup and shaders/90_warmup, renaming its C++
 // namespace: the only edit a course's staff makes to a copied lab.
 void copy_lab(const fs::path& tree) {
     const std::string t = shell_quote(tree.string());
     REQUIRE(run("cd " + t +
-                " && cp -r labs/00_pipeline labs/07_warmup && "
-                "cp -r shaders/00_pipeline shaders/07_warmup && "
-                "find labs/07_warmup -name '*.cpp' -o -name '*.hpp' | xargs sed -i "
+                " && cp -r labs/00_pipeline labs/90_warmup && "
+                "cp -r shaders/00_pipeline shaders/90_warmup && "
+                "find labs/90_warmup -name '*.cpp' -o -name '*.hpp' | xargs sed -i "
                 "-e 's/namespace pipeline/namespace warmup/g' -e 's/pipeline::/warmup::/g'")
                 .exit_code == 0);
 }
 
 }  // namespace
 
-TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, releases, tests") {
+TEST_CASE("new lab: a copy of lab 0 as labs/90_warmup lists, renders, grades, releases, tests") {
     const fs::path out = fw::test::out_dir();
     const fs::path tree = out / "tree";
     copy_repository(tree);
     copy_lab(tree);
     // Only the two new folders: no other file names the lab.
-    CHECK(changes(tree) == "?? labs/07_warmup/\n?? shaders/07_warmup/\n");
+    CHECK(changes(tree) == "?? labs/90_warmup/\n?? shaders/90_warmup/\n");
     tree_test::build_tree(tree, "lab course test_warmup");
     const std::string bin = shell_quote((tree / "build/bin").string()) + "/";
 
@@ -95,7 +95,7 @@ TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, re
     const nlohmann::json labs = nlohmann::json::parse(list.output);
     bool listed = false;
     for (const nlohmann::json& lab : labs)
-        listed = listed || (lab.value("number", -1) == 7 && lab.value("name", "") == "warmup");
+        listed = listed || (lab.value("number", -1) == 90 && lab.value("name", "") == "warmup");
     CHECK_MESSAGE(listed, "lab list: " << list.output);
 
     // Renders its checkpoints exactly as the lab it was copied from.
@@ -123,21 +123,21 @@ TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, re
                                         "course release --out " + shell_quote(release.string());
     const fw::test::CommandResult untracked = run(release_command);
     CHECK(untracked.exit_code == 0);
-    CHECK(untracked.output.find("labs/07_warmup/pipeline.cpp") != std::string::npos);
+    CHECK(untracked.output.find("labs/90_warmup/pipeline.cpp") != std::string::npos);
     CHECK(untracked.output.find("git does not track it") != std::string::npos);
-    CHECK_FALSE(fs::exists(release / "labs/07_warmup"));
+    CHECK_FALSE(fs::exists(release / "labs/90_warmup"));
 
     // ...and released to students, without its solutions, once added.
     const std::string git = "git -C " + shell_quote(tree.string()) + " ";
-    REQUIRE(run(git + "add labs/07_warmup shaders/07_warmup").exit_code == 0);
+    REQUIRE(run(git + "add labs/90_warmup shaders/90_warmup").exit_code == 0);
     fs::remove_all(release);
     CHECK(run(release_command).exit_code == 0);
-    const std::string student = read_text((release / "labs/07_warmup/pipeline.cpp").string());
+    const std::string student = read_text((release / "labs/90_warmup/pipeline.cpp").string());
     CHECK(student.find("FW_LAB(PipelineLab)") != std::string::npos);
     CHECK(student.find("BEGIN SOLUTION") == std::string::npos);
-    CHECK(fs::exists(release / "shaders/07_warmup/pipeline.vert"));
+    CHECK(fs::exists(release / "shaders/90_warmup/pipeline.vert"));
 
-    // Passes its own tests (those found in labs/07_warmup/tests/).
+    // Passes its own tests (those found in labs/90_warmup/tests/).
     CHECK(run("ctest --test-dir " + shell_quote((tree / "build").string()) +
               " -R '^warmup\\.' --output-on-failure")
               .exit_code == 0);
@@ -149,7 +149,7 @@ TEST_CASE("new lab: a copy of lab 0 as labs/07_warmup lists, renders, grades, re
     std::istringstream lines(after);
     for (std::string line; std::getline(lines, line);) {
         CAPTURE(line);
-        CHECK((line.empty() || line.rfind("A  labs/07_warmup/", 0) == 0 ||
-               line.rfind("A  shaders/07_warmup/", 0) == 0));
+        CHECK((line.empty() || line.rfind("A  labs/90_warmup/", 0) == 0 ||
+               line.rfind("A  shaders/90_warmup/", 0) == 0));
     }
 }
