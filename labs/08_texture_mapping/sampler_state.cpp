@@ -55,15 +55,19 @@ void set_filters(MinFilter min, MagFilter mag) {
             break;
     }
     const GLint mag_mode = mag == MagFilter::Nearest ? GL_NEAREST : GL_LINEAR;
-    const bool mipmapped =
-        min == MinFilter::NearestMipmapNearest || min == MinFilter::LinearMipmapLinear;
     // BEGIN SOLUTION
-    // STUDENT: (void)min_mode, (void)mag_mode, (void)mipmapped;
-    // STUDENT: // TODO: glTexParameteri for GL_TEXTURE_MIN_FILTER and GL_TEXTURE_MAG_FILTER;
-    // STUDENT: // glGenerateMipmap(GL_TEXTURE_2D) when the minification filter is mipmapped
+    // STUDENT: (void)min_mode, (void)mag_mode;
+    // STUDENT: // TODO: glTexParameteri for GL_TEXTURE_MIN_FILTER and GL_TEXTURE_MAG_FILTER
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_mode);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag_mode);
-    if (mipmapped) glGenerateMipmap(GL_TEXTURE_2D);
+    // END SOLUTION
+}
+
+void build_mipmaps(const fw::Texture2D& texture) {
+    // BEGIN SOLUTION
+    // STUDENT: (void)texture;  // TODO: bind it, then glGenerateMipmap(GL_TEXTURE_2D)
+    bind_texture(0, texture);
+    glGenerateMipmap(GL_TEXTURE_2D);
     // END SOLUTION
 }
 

@@ -40,9 +40,14 @@ void bind_texture(GLuint unit, const fw::Texture2D& texture);
 void set_wrap(Wrap wrap);
 
 // For the texture bound to the active unit: the magnification and
-// minification filters; a mipmapped minification filter needs the levels
-// below level 0, made from it by glGenerateMipmap.
+// minification filters. A mipmapped minification filter reads the levels
+// below level 0, which build_mipmaps() made.
 void set_filters(MinFilter min, MagFilter mag);
+
+// The levels below `texture`'s level 0, each half the size of the one above,
+// made from level 0 by glGenerateMipmap: once, after level 0 is uploaded
+// (the texture must have storage for them, Texture2DDesc::levels).
+void build_mipmaps(const fw::Texture2D& texture);
 
 // scene=lightmap: the base texture on unit 0 and the light map on unit 1, and
 // the program's samplers u_texture and u_light_map reading those units.

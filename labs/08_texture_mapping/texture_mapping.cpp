@@ -13,8 +13,8 @@
 // glGenerateMipmap, the sampler uniforms (sampler2D, texture()), glViewport,
 // glEnable(GL_DEPTH_TEST), glDepthFunc, glBindVertexArray with glDrawElements
 // (every mesh); stb_image's stbi_load for the image file.
-// Student parts (marked TODO): bind_texture(), set_wrap(), set_filters() and
-// bind_maps() in sampler_state.cpp; planar(), cylindrical(), spherical() and
+// Student parts (marked TODO): bind_texture(), set_wrap(), set_filters(),
+// build_mipmaps() and bind_maps() in sampler_state.cpp; planar(), cylindrical(), spherical() and
 // level_of_detail() in mappings.cpp; the file's row order in load_image()
 // (textures.cpp); the mappings and the lighting in
 // shaders/08_texture_mapping/sphere.frag and the modulation in quad.frag.
@@ -119,9 +119,10 @@ public:
                             "grid.png");
         floor_texture_ = texture_of(floor_checker(), "floor checker");
         ramp_ = texture_of(ramp(), "ramp");
-        // Storage for the whole chain, 256 x 256 down to 1 x 1; its levels
-        // below 0 are made when a mipmapped filter asks for them.
+        // Storage for the whole chain, 256 x 256 down to 1 x 1, and the
+        // levels below 0 made from level 0 once, after it is uploaded.
         fine_ = texture_of(fine_checker(), "fine checker", 9);
+        build_mipmaps(fine_);
         base_ = texture_of(base_texture(), "base");
         light_map_ = texture_of(light_map(), "light map");
     }
