@@ -73,8 +73,10 @@ void build_mipmaps(const fw::Texture2D& texture) {
 
 void bind_maps(const fw::Program& program, const fw::Texture2D& base, const fw::Texture2D& light) {
     // BEGIN SOLUTION
-    // STUDENT: bind_texture(0, base);  // TODO: the light map on unit 1, and the samplers:
-    // STUDENT: (void)light, (void)program;  // u_texture reads unit 0, u_light_map unit 1
+    // STUDENT: // TODO: the light map on unit 1 too, and the samplers: u_texture reads
+    // STUDENT: // unit 0, u_light_map unit 1
+    // STUDENT: bind_texture(0, base);
+    // STUDENT: (void)light, (void)program;
     bind_texture(0, base);
     bind_texture(1, light);
     program.set("u_texture", 0);
