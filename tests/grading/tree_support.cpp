@@ -32,8 +32,12 @@ std::string jobs() { return std::to_string(std::max(1u, std::thread::hardware_co
 
 void build_tree(const fs::path& source, const std::string& targets) {
     const std::string build = (source / "build").string();
+    // The suite's own build type (LAB_TEST_BUILD_TYPE), so that a copy's
+    // objects are the ones the suite's build put in the cache wherever the
+    // sources are the same (the ci preset's flags, warnings as errors).
     std::string configure = "cmake -S " + shell_quote(source.string()) + " -B " +
-                            shell_quote(build) + " -DCMAKE_BUILD_TYPE=Release -DLAB_WERROR=ON";
+                            shell_quote(build) + " -DCMAKE_BUILD_TYPE=" + LAB_TEST_BUILD_TYPE +
+                            " -DLAB_WERROR=ON";
     if (fw::test::run_command("command -v ccache").exit_code == 0)
         configure += " -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache";
     REQUIRE_MESSAGE(run(configure).exit_code == 0, "configuring " << source);

@@ -27,8 +27,8 @@ fw::test::CommandResult run(const std::string& command, bool may_fail = false);
 // The number of parallel jobs for builds and `course grade --jobs`.
 std::string jobs();
 
-// Configures (Release, warnings as errors, through ccache when it is
-// installed) and builds `targets` of the tree at `source` into source/build.
+// Configures (the suite's build type, warnings as errors, through ccache
+// when it is installed) and builds `targets` of the tree at `source` into source/build.
 // Fails the test case when either step fails.
 void build_tree(const fs::path& source, const std::string& targets);
 
