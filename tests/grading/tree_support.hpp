@@ -27,15 +27,11 @@ fw::test::CommandResult run(const std::string& command, bool may_fail = false);
 // The number of parallel jobs for builds and `course grade --jobs`.
 std::string jobs();
 
-// Configures (the suite's build type, warnings as errors, through ccache
-// when it is installed) and builds `targets` of the tree at `source` into source/build.
+// Configures (the suite's build type, warnings as errors; the tree's own
+// CMakeLists.txt compiles through ccache when it is installed) and builds
+// `targets` of the tree at `source` into source/build.
 // Fails the test case when either step fails.
 void build_tree(const fs::path& source, const std::string& targets);
-
-// The environment under which ccache, when the build uses it, names the
-// files of the tree at `source` by their paths inside it: every copy of the
-// repository then shares the cache's objects ("NAME=value ... ").
-std::string ccache_env(const fs::path& source);
 
 // Builds `targets` of a tree that build_tree() configured; whether it built.
 bool rebuild_tree(const fs::path& source, const std::string& targets);
