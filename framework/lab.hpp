@@ -78,6 +78,14 @@ private:
     std::vector<std::unique_ptr<Program>> programs_;
 };
 
+// A buffer the lab's shaders wrote (transform feedback, a compute shader),
+// read back as floats for the grader's `buffer` checks (docs/contract.md).
+struct LabBuffer {
+    std::string name;           // what checks call it, e.g. "particles"
+    int components = 1;         // floats per element: 3 for a vec3 per particle
+    std::vector<float> values;  // element after element, `components` floats each
+};
+
 // What a frame is drawn into.
 struct Frame {
     int width = 512;
@@ -111,6 +119,9 @@ public:
     virtual nlohmann::json stats(const ParamValues&, const Frame&) const {
         return nlohmann::json::object();
     }
+    // The buffers the frame just drawn with these parameters wrote, read
+    // back, for `buffer` checks; called after draw(), in its context.
+    virtual std::vector<LabBuffer> buffers(const ParamValues&, const Frame&) const { return {}; }
     // Checks that involve several parameters (e.g. far > near); returns an
     // error message naming them, or empty when the values are consistent.
     virtual std::string validate(const ParamValues&) const { return {}; }
