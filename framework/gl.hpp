@@ -11,4 +11,5 @@
 #include "framework/gl/query.hpp"
 #include "framework/gl/shader.hpp"
 #include "framework/gl/texture.hpp"
+#include "framework/gl/transform_feedback.hpp"
 #include "framework/gl/vertex_array.hpp"

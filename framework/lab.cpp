@@ -13,15 +13,16 @@ namespace fw {
 ProgramLibrary::ProgramLibrary(std::string folder) : folder_(std::move(folder)) {}
 ProgramLibrary::~ProgramLibrary() = default;
 
-Program& ProgramLibrary::load(const std::vector<std::string>& files) {
+Program& ProgramLibrary::load(const std::vector<std::string>& files,
+                              const std::vector<std::string>& feedback) {
     std::vector<std::string> paths;
     for (const std::string& file : files)
         paths.push_back(
             folder_.empty() || file.find('/') != std::string::npos ? file : folder_ + "/" + file);
     try {
-        programs_.push_back(std::make_unique<Program>(Program::from_files(paths)));
+        programs_.push_back(std::make_unique<Program>(Program::from_files(paths, {}, feedback)));
     } catch (const ShaderError& e) {
-        programs_.push_back(std::make_unique<Program>(Program::failed(paths, e)));
+        programs_.push_back(std::make_unique<Program>(Program::failed(paths, e, feedback)));
     }
     return *programs_.back();
 }
@@ -31,11 +32,13 @@ std::vector<std::string> ProgramLibrary::reload_all() {
     for (auto& program : programs_) {
         try {
             Program fresh = Program::from_files(program->files(),
-                                                program->build_error() ? "" : program->label());
+                                                program->build_error() ? "" : program->label(),
+                                                program->feedback());
             *program = std::move(fresh);
         } catch (const ShaderError& e) {
             // A program that never built stays failed, with the new reason.
-            if (program->build_error()) *program = Program::failed(program->files(), e);
+            if (program->build_error())
+                *program = Program::failed(program->files(), e, program->feedback());
             errors.push_back(e.what());
         } catch (const Error& e) {
             errors.push_back(e.what());

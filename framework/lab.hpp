@@ -61,11 +61,13 @@ public:
 
     // Compiles and links now: load({"pipeline.vert", "pipeline.frag"}). A name
     // without '/' is in the lab's folder; one with '/' is relative to
-    // shaders/ (or absolute). A program that does not build is kept as
+    // shaders/ (or absolute). `feedback`: the outputs transform feedback
+    // captures (Program::from_files). A program that does not build is kept as
     // failed (Program::failed): whatever draws with it throws the
     // fw::ShaderError, with file, stage, line and source, and the rest of the
     // lab still draws. The reference stays valid for the library's life.
-    Program& load(const std::vector<std::string>& files);
+    Program& load(const std::vector<std::string>& files,
+                  const std::vector<std::string>& feedback = {});
     // Recompiles every program. Returns one message per program that failed
     // (those keep drawing with their last good version, or stay failed);
     // empty when all built.

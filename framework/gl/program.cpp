@@ -60,18 +60,22 @@ bool contains_word(const std::string& text, const std::string& word) {
 
 }  // namespace
 
-Program Program::from_files(const std::vector<std::string>& files, std::string label) {
+Program Program::from_files(const std::vector<std::string>& files, std::string label,
+                            std::vector<std::string> feedback) {
     if (files.empty()) throw UsageError("Program::from_files: no shader files given");
     std::vector<Shader> shaders;
     for (const std::string& f : files) shaders.push_back(Shader::from_file(f));
-    Program p = from_shaders(std::move(shaders), label.empty() ? joined_names(files) : label);
+    Program p = from_shaders(std::move(shaders), label.empty() ? joined_names(files) : label,
+                             std::move(feedback));
     p.files_ = files;
     return p;
 }
 
-Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
+Program Program::from_shaders(std::vector<Shader> shaders, std::string label,
+                              std::vector<std::string> feedback) {
     if (shaders.empty()) throw UsageError("Program::from_shaders: no shaders given");
     Program p;
+    p.feedback_ = std::move(feedback);
     for (const Shader& s : shaders) {
         p.files_.push_back(display_path(s.path()));
         p.sources_.emplace_back(display_path(s.path()), s.source());
@@ -83,6 +87,12 @@ Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
         throw Error("glCreateProgram failed for " + p.label_ + " (is a GL context current?)");
     p.handle_ = detail::Handle(id, [](GLuint n) { glDeleteProgram(n); });
     for (const Shader& s : shaders) glAttachShader(id, s.id());
+    if (!p.feedback_.empty()) {
+        std::vector<const char*> names;
+        for (const std::string& n : p.feedback_) names.push_back(n.c_str());
+        glTransformFeedbackVaryings(id, static_cast<GLsizei>(names.size()), names.data(),
+                                    GL_INTERLEAVED_ATTRIBS);
+    }
     glLinkProgram(id);
     // The linked program keeps its own copy of the code; detached shaders
     // can be deleted when `shaders` goes out of scope.
@@ -104,9 +114,11 @@ Program Program::from_shaders(std::vector<Shader> shaders, std::string label) {
     return p;
 }
 
-Program Program::failed(std::vector<std::string> files, const ShaderError& error) {
+Program Program::failed(std::vector<std::string> files, const ShaderError& error,
+                        std::vector<std::string> feedback) {
     Program p;
     p.files_ = std::move(files);
+    p.feedback_ = std::move(feedback);
     p.label_ = joined_names(p.files_);
     p.error_ = std::make_shared<ShaderError>(error);
     return p;

@@ -47,14 +47,22 @@ public:
 
     // Compiles every file (relative to shader_dir() or absolute; stage from
     // the extension) and links them. `label` defaults to the file names
-    // joined: "00_pipeline/pipeline.vert + pipeline.frag".
-    static Program from_files(const std::vector<std::string>& files, std::string label = {});
-    static Program from_shaders(std::vector<Shader> shaders, std::string label = {});
+    // joined: "00_pipeline/pipeline.vert + pipeline.frag". `feedback`: the
+    // outputs of the last stage before the rasterizer that transform feedback
+    // captures, in this order, interleaved into binding 0 of
+    // GL_TRANSFORM_FEEDBACK_BUFFER (glTransformFeedbackVaryings before the
+    // link, GL_INTERLEAVED_ATTRIBS); a name the stage does not write fails
+    // the link with the linker's message.
+    static Program from_files(const std::vector<std::string>& files, std::string label = {},
+                              std::vector<std::string> feedback = {});
+    static Program from_shaders(std::vector<Shader> shaders, std::string label = {},
+                                std::vector<std::string> feedback = {});
 
     // A program that failed to build, kept so that only what draws with it
     // fails: id(), use() and every set() throw `error` again. ProgramLibrary
     // keeps such programs until a reload builds them.
-    static Program failed(std::vector<std::string> files, const ShaderError& error);
+    static Program failed(std::vector<std::string> files, const ShaderError& error,
+                          std::vector<std::string> feedback = {});
     // Null when the program built; else why it did not.
     const ShaderError* build_error() const { return error_.get(); }
 
@@ -65,6 +73,8 @@ public:
     // glUseProgram(id()).
     void use() const;
     const std::vector<std::string>& files() const { return files_; }
+    // The outputs transform feedback captures (from_files), empty for most programs.
+    const std::vector<std::string>& feedback() const { return feedback_; }
     const std::string& label() const { return label_; }
 
     // Scalars, vectors and matrices. bool uniforms take bool or int, sampler
@@ -139,6 +149,7 @@ private:
 
     detail::Handle handle_;
     std::vector<std::string> files_;
+    std::vector<std::string> feedback_;
     std::string label_;
     // Every active uniform, plus for arrays "name" and each "name[i]".
     // Looked up on every set(): hashed, not ordered (describe_uniforms sorts).
