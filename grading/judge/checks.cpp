@@ -231,9 +231,13 @@ Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, co
         case CheckKind::Forbidden:
             c.spec = parse_forbidden(w);
             break;
-        case CheckKind::Buffer:
-            c.spec = parse_buffer(w, lab, cp);
+        case CheckKind::Buffer: {
+            const auto found = recorded.find({cp.name, index});
+            c.spec = parse_buffer(
+                w, lab, cp,
+                found != recorded.end() && found->second.buffer ? &*found->second.buffer : nullptr);
             break;
+        }
     }
     return c;
 }

@@ -22,11 +22,14 @@ class CheckWhere;
 constexpr std::uint64_t kBuffersFileLimit = 4 * kMiB;
 
 // "buffer", "reference", "tolerance" of a check; the reference called on the
-// checkpoint's params as written, and each of its mistakes. Throws
-// fw::UsageError (CheckWhere::fail) for a missing or wrong field, an unknown
-// reference, a param the reference needs that the checkpoint lacks, or a
-// reference that cannot take the params.
-BufferCheck parse_buffer(const CheckWhere& w, const LabData& lab, const fw::Checkpoint& cp);
+// checkpoint's params as written, and each of its mistakes. Where course has
+// no compiled reference of that name, what `recorded` holds for the check
+// (the lab's cases.json, cases.hpp; null when none). Throws fw::UsageError
+// (CheckWhere::fail) for a missing or wrong field, an unknown reference, a
+// param the reference needs that the checkpoint lacks, or a reference that
+// cannot take the params.
+BufferCheck parse_buffer(const CheckWhere& w, const LabData& lab, const fw::Checkpoint& cp,
+                         const BufferCheck* recorded = nullptr);
 
 // The checkpoint's NAME.buffers.json; false and why (missing, too large, not
 // a buffers file) when it cannot be read.

@@ -13,6 +13,7 @@
 
 #include "framework/error.hpp"
 #include "framework/lab_buffers.hpp"
+#include "grading/judge/cases.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/judge_buffer.hpp"
 #include "grading/report/prairielearn_results.hpp"
@@ -44,6 +45,16 @@ const bool registered =
         "90_buffers", {"", "fall", "gravity-twice", "gravity applied twice", &ref_fall_twice});
 
 const json kParams = {{"steps", 1}, {"count", 4}};
+
+// The message parse_checks throws for `lab`.
+std::string parse_error_of(grading::LabData& lab) {
+    try {
+        grading::parse_checks(lab);
+    } catch (const fw::UsageError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
 
 // A lab of one checkpoint with `check` (and the params given), its checks parsed.
 grading::LabData lab_with(const json& check, const json& params = kParams) {
@@ -350,6 +361,45 @@ TEST_CASE("judge_lab reads the buffers file and every report carries the verdict
     const json& pl = prairielearn.at("tests").at(0);
     CHECK(has(pl.at("message").get<std::string>(), words));
     CHECK(has(pl.at("output").get<std::string>(), words));
+}
+
+TEST_CASE("a copy without the references judges buffer checks from the values recorded") {
+    const grading::LabData lab = lab_with(kCheck);
+    const json cases = grading::record_unit_cases(lab, 1, 50);
+    REQUIRE(cases.at("checks").size() == 1);
+    CHECK(cases["checks"][0].at("buffer").at("mistakes").size() == 1);
+    // The same checkpoint in a lab course has no compiled reference for.
+    grading::LabData copy = lab;
+    copy.id = "copied";
+    copy.dir = "92_copied";
+    copy.checks.clear();
+    json tolerant = kCheck;
+    tolerant["tolerance"] = 0.001;  // the check's own, as its file writes it
+    copy.file.checkpoints[0].checks = json::array({tolerant});
+    std::filesystem::remove_all(copy.root);
+    CHECK_THROWS_WITH_AS(grading::parse_checks(copy),
+                         doctest::Contains("\"reference\" course has no buffer reference 'fall' "
+                                           "for lab 'copied'; it has none for that lab"),
+                         fw::UsageError);
+    grading::write_unit_cases(grading::unit_cases_path(copy), cases);
+    grading::parse_checks(copy);
+    const auto& recorded = copy.checks[0][0].as<grading::BufferCheck>();
+    const auto& compiled = lab.checks[0][0].as<grading::BufferCheck>();
+    CHECK(recorded.expected.values == compiled.expected.values);
+    CHECK(recorded.tolerance == 0.001);
+    CHECK(recorded.element == "particle");
+    const std::vector<fw::LabBuffer> twice = {particles(kParams, 19.6)};
+    grading::CheckResult r;
+    grading::judge_buffer(recorded, &twice, "", r);
+    CHECK(has(r.output, "4 of 4 particles differ: gravity applied twice?"));
+    // Another reference's values are not this check's.
+    json other = kCheck;
+    other["reference"] = "rise";
+    copy.file.checkpoints[0].checks = json::array({other});
+    const std::string why = parse_error_of(copy);
+    CHECK_MESSAGE(
+        has(why, "nor does " + grading::unit_cases_path(copy) + " hold its values for this check"),
+        why);
 }
 
 TEST_CASE("buffer references: their words, and registrations that cannot work") {
