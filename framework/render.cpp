@@ -9,6 +9,7 @@
 #include "framework/gl/debug.hpp"
 #include "framework/gl/framebuffer.hpp"
 #include "framework/gl/query.hpp"
+#include "framework/lab_buffers.hpp"
 
 namespace fw {
 
@@ -112,11 +113,16 @@ FrameResult LabRenderer::draw(const ParamValues& params, int width, int height, 
 }
 
 RenderOutput LabRenderer::render(const ParamValues& params, int width, int height, double time,
-                                 bool with_depth) {
+                                 ReadBack read) {
     RenderOutput out;
     out.stats = draw(params, width, height, time).stats;
     out.color = framebuffer_->read_color();
-    if (with_depth) out.depth = framebuffer_->read_depth();
+    if (read.depth) out.depth = framebuffer_->read_depth();
+    if (read.buffers) {
+        // The lab sees the frame its draw() saw.
+        out.buffers = lab_->buffers(params, scene_frame(registered_.info, {width, height, time}));
+        check_lab_buffers(out.buffers, registered_.info.id);
+    }
     check_gl(("read-back of lab " + registered_.info.id).c_str());
     return out;
 }

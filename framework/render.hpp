@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "framework/context.hpp"
 #include "framework/image.hpp"
@@ -26,7 +27,15 @@ struct FrameResult {
 struct RenderOutput {
     Image color;
     DepthImage depth;
-    nlohmann::json stats;  // as FrameResult::stats
+    nlohmann::json stats;            // as FrameResult::stats
+    std::vector<LabBuffer> buffers;  // Lab::buffers() of the frame, when asked (ReadBack)
+};
+
+// What render() reads back besides the colour: the depth buffer, and the
+// buffers the lab's shaders wrote (Lab::buffers, checked by check_lab_buffers).
+struct ReadBack {
+    bool depth = true;
+    bool buffers = false;
 };
 
 // The state that glClear and glBlitFramebuffer obey, as GL starts: the
@@ -52,10 +61,10 @@ public:
     // it got. `time`: seconds for a lab that animates (Frame::time; 0 draws
     // what lab render draws). Waits until GL has finished the frame.
     FrameResult draw(const ParamValues& params, int width, int height, double time = 0.0);
-    // draw(), then the frame read back. Without `with_depth` the depth is not
-    // read (RenderOutput::depth stays empty).
+    // draw(), then the frame read back: its colour, and what `read` asks for
+    // (what it leaves out stays empty in the output).
     RenderOutput render(const ParamValues& params, int width, int height, double time = 0.0,
-                        bool with_depth = true);
+                        ReadBack read = {});
     // What the last draw() drew into; null before the first.
     const Framebuffer* framebuffer() const { return framebuffer_.get(); }
 

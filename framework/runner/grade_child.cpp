@@ -9,6 +9,7 @@
 #include "framework/error.hpp"
 #include "framework/image.hpp"
 #include "framework/lab.hpp"
+#include "framework/lab_buffers.hpp"
 #include "framework/render.hpp"
 
 namespace fw {
@@ -42,10 +43,13 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     ParamValues params = default_params(lab);
     const json given = job.value("params", json::object());
     for (const auto& [key, value] : given.items()) params.set_json(key, value);
-    RenderOutput out = renderer.render(params, job.value("width", 512), job.value("height", 512));
+    const ReadBack read{job.value("depth", false), job.value("buffers", false)};
+    RenderOutput out =
+        renderer.render(params, job.value("width", 512), job.value("height", 512), 0.0, read);
     // Raw pixels: course judges them and encodes only what a report shows.
     write_pam(base + ".pam", out.color);
-    if (job.value("depth", false)) write_pfm(base + ".pfm", out.depth);
+    if (read.depth) write_pfm(base + ".pfm", out.depth);
+    if (read.buffers) write_buffers(base + ".buffers.json", out.buffers);
     write_json(base + ".stats.json", out.stats);
 }
 

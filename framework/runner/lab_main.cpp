@@ -15,6 +15,7 @@
 #include "framework/error.hpp"
 #include "framework/image.hpp"
 #include "framework/lab.hpp"
+#include "framework/lab_buffers.hpp"
 #include "framework/render.hpp"
 #include "framework/runner/grade_child.hpp"
 #include "framework/serve/server.hpp"
@@ -86,7 +87,7 @@ void write_text(const std::string& path, const std::string& text) {
 }
 
 struct RenderArgs {
-    std::string lab, checkpoint, size = "512x512", backend, output, depth_out, stats;
+    std::string lab, checkpoint, size = "512x512", backend, output, depth_out, stats, buffers;
     std::vector<std::string> sets;
 };
 
@@ -98,10 +99,12 @@ void render(const RenderArgs& a) {
     fw::Backend backend = a.backend.empty() ? fw::backend_from_env() : fw::parse_backend(a.backend);
     auto context = fw::create_offscreen_context(backend);
     fw::LabRenderer renderer(lab, context->info());
-    fw::RenderOutput out = renderer.render(params, width, height);
+    const fw::ReadBack read{!a.depth_out.empty(), !a.buffers.empty()};
+    fw::RenderOutput out = renderer.render(params, width, height, 0.0, read);
     fw::write_png(a.output, out.color);
-    if (!a.depth_out.empty()) fw::write_pfm(a.depth_out, out.depth);
+    if (read.depth) fw::write_pfm(a.depth_out, out.depth);
     if (!a.stats.empty()) write_text(a.stats, out.stats.dump(2) + "\n");
+    if (read.buffers) fw::write_buffers(a.buffers, out.buffers);
 }
 
 // Renders every checkpoint of the given labs (all labs when none) in one
@@ -175,6 +178,8 @@ Command add_render(CLI::App& app, RenderArgs& a) {
     render_cmd->add_option("-o,--output", a.output, "PNG file to write")->required();
     render_cmd->add_option("--depth-out", a.depth_out, "Write window-space depth as PFM");
     render_cmd->add_option("--stats", a.stats, "Write frame statistics as JSON");
+    render_cmd->add_option("--buffers", a.buffers,
+                           "Write the buffers the lab's shaders wrote as JSON");
     return {render_cmd, done([&a] { render(a); })};
 }
 

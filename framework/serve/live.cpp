@@ -144,7 +144,8 @@ LiveLab::Job LiveLab::take_input(double time) {
 std::shared_ptr<LiveFrame> LiveLab::draw(const Job& job) {
     auto frame = std::make_shared<LiveFrame>();
     try {
-        RenderOutput out = renderer_->render(job.params, job.width, job.height, job.time, false);
+        RenderOutput out =
+            renderer_->render(job.params, job.width, job.height, job.time, ReadBack{false, false});
         frame->render_ms = out.stats.value("render_ms", 0.0);
         frame->stats = std::move(out.stats);
         frame->jpeg = encode_jpeg(out.color, 85);

@@ -17,7 +17,7 @@ int cases_command(const CasesOptions& options) {
     const nlohmann::json cases = record_unit_cases(lab, options.seed, options.max_random);
     const std::string out = options.out.empty() ? unit_cases_path(lab) : options.out;
     write_unit_cases(out, cases);
-    std::printf("%s: %zu unit checks, %zu functions, %ju bytes\n", out.c_str(),
+    std::printf("%s: %zu unit and buffer checks, %zu functions, %ju bytes\n", out.c_str(),
                 cases["checks"].size(), cases["functions"].size(),
                 static_cast<uintmax_t>(std::filesystem::file_size(out)));
     return 0;

@@ -32,6 +32,39 @@ const ReferenceUnit& compiled_reference(const LabData& lab, const std::string& f
     return ref;
 }
 
+json expectation_json(const BufferExpectation& e) {
+    return {{"components", e.components}, {"values", e.values}};
+}
+
+BufferExpectation expectation_of(const json& j) {
+    return {j.at("components").get<int>(), j.at("values").get<std::vector<float>>()};
+}
+
+// A buffer check's expectation and mistakes, as course computed them.
+json buffer_json(const BufferCheck& c) {
+    json entry = expectation_json(c.expected);
+    entry.update({{"reference", c.reference}, {"element", c.element}, {"verb", c.verb}});
+    entry["mistakes"] = json::array();
+    for (const KnownBufferMistake& m : c.mistakes) {
+        json mistake = expectation_json(m.values);
+        mistake.update({{"id", m.id}, {"sentence", m.sentence}});
+        entry["mistakes"].push_back(std::move(mistake));
+    }
+    return entry;
+}
+
+BufferCheck buffer_of(const json& j) {
+    BufferCheck c;
+    c.reference = j.at("reference").get<std::string>();
+    c.element = j.at("element").get<std::string>();
+    c.verb = j.at("verb").get<std::string>();
+    c.expected = expectation_of(j);
+    for (const json& m : j.at("mistakes"))
+        c.mistakes.push_back({m.at("id").get<std::string>(), m.at("sentence").get<std::string>(),
+                              expectation_of(m)});
+    return c;
+}
+
 }  // namespace
 
 json record_unit_cases(const LabData& lab, unsigned seed, int max_random, RecordFor recorded_for) {
@@ -46,6 +79,10 @@ json record_unit_cases(const LabData& lab, unsigned seed, int max_random, Record
         if (cp.visibility == "hidden" && recorded_for == RecordFor::StudentCopy)
             continue;  // not in the student's copy
         for (size_t i = 0; i < parsed.checks[k].size(); ++i) {
+            if (parsed.checks[k][i].kind == CheckKind::Buffer)
+                checks.push_back({{"checkpoint", cp.name},
+                                  {"check", i},
+                                  {"buffer", buffer_json(parsed.checks[k][i].as<BufferCheck>())}});
             if (parsed.checks[k][i].kind != CheckKind::Unit) continue;
             const UnitCheck& check = parsed.checks[k][i].as<UnitCheck>();
             const ReferenceUnit& ref = compiled_reference(parsed, check.function);
@@ -93,8 +130,13 @@ namespace {
 RecordedChecks read_checks(const json& checks) {
     RecordedChecks out;
     for (const json& c : checks) {
-        RecordedCheck r{c.at("function").get<std::string>(),
-                        c.at("random").get<std::vector<json>>()};
+        RecordedCheck r;
+        if (c.contains("buffer")) {
+            r.buffer = buffer_of(c.at("buffer"));
+        } else {
+            r.function = c.at("function").get<std::string>();
+            r.random = c.at("random").get<std::vector<json>>();
+        }
         out[{c.at("checkpoint").get<std::string>(), c.at("check").get<size_t>()}] = std::move(r);
     }
     return out;

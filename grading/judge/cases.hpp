@@ -21,12 +21,19 @@
 //   {"format": 1, "lab": "transforms", "seed": 7, "max_random": 50, "for": "student copy",
 //    "functions": {"translate": <a recorded reference, recorded.hpp>, ...},
 //    "checks": [{"checkpoint": "translate", "check": 3, "function": "translate",
-//                "random": [[args], ...]}, ...]}
-// "check" is the index in the checkpoint's checks, from 0.
+//                "random": [[args], ...]},
+//               {"checkpoint": "falling", "check": 0, "buffer": {"reference": "fall",
+//                "element": "particle", "verb": "is at", "components": 3, "values": [...],
+//                "mistakes": [{"id", "sentence", "components", "values"}]}}, ...]}
+// "check" is the index in the checkpoint's checks, from 0. A buffer check's
+// entry holds what course computed from the checkpoint's params (its
+// reference in labs/NN_name/grading/*.cpp gives the solution away too); a
+// compiled reference wins over it.
 #pragma once
 
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -55,10 +62,12 @@ void write_unit_cases(const std::string& path, const nlohmann::json& cases);
 // root/labs/NN_name/grading/cases.json.
 std::string unit_cases_path(const LabData& lab);
 
-// A check's recorded random argument lists, by checkpoint name and check index.
+// A check's recorded random argument lists, by checkpoint name and check index;
+// for a buffer check, its expectation and its reference's known mistakes.
 struct RecordedCheck {
     std::string function;
     std::vector<nlohmann::json> random;
+    std::optional<BufferCheck> buffer;
 };
 using RecordedChecks = std::map<std::pair<std::string, size_t>, RecordedCheck>;
 

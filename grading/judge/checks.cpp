@@ -9,6 +9,8 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/judge/cases.hpp"
+#include "grading/judge/check_where.hpp"
+#include "grading/judge/judge_buffer.hpp"
 #include "grading/units/reference.hpp"
 
 namespace grading {
@@ -32,59 +34,9 @@ const std::map<CheckKind, std::set<std::string>> kFields = {
     {CheckKind::Stat, {"stat", "equals", "min", "max", "tolerance"}},
     {CheckKind::Unit, {"function", "random", "edge", "tolerance"}},
     {CheckKind::Forbidden, {"files", "names", "rule"}},
+    {CheckKind::Buffer, {"buffer", "reference", "tolerance"}},
 };
-
-class CheckWhere {
-public:
-    CheckWhere(const LabData& lab, const fw::Checkpoint& cp, size_t index, const json& check)
-        : lab_(lab), cp_(cp), index_(index), check_(check) {}
-
-    [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-        std::string kind =
-            check_.is_object() && check_.contains("kind") && check_["kind"].is_string()
-                ? " (" + check_["kind"].get<std::string>() + ")"
-                : "";
-        throw fw::UsageError(lab_.file.path + ": checkpoint '" + cp_.name + "', check " +
-                             std::to_string(index_ + 1) + kind +
-                             (field.empty() ? ": " : ": \"" + field + "\" ") + what);
-    }
-    const json& get(const std::string& field) const { return check_[field]; }
-    bool has(const std::string& field) const { return check_.contains(field); }
-
-    double number(const std::string& field, double lo, double hi) const {
-        const json& v = check_[field];
-        if (!v.is_number() || v.get<double>() < lo || v.get<double>() > hi)
-            fail(field, "must be a number in [" + json(lo).dump() + ", " + json(hi).dump() +
-                            "], got " + v.dump());
-        return v.get<double>();
-    }
-    int integer(const std::string& field, int lo, int hi) const {
-        const json& v = check_[field];
-        if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
-            fail(field, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                            "], got " + v.dump());
-        return v.get<int>();
-    }
-    std::vector<double> numbers(const std::string& field, size_t min_n, size_t max_n, double lo,
-                                double hi) const {
-        const json& v = check_[field];
-        bool ok = v.is_array() && v.size() >= min_n && v.size() <= max_n;
-        for (size_t i = 0; ok && i < v.size(); ++i)
-            ok = v[i].is_number() && v[i].get<double>() >= lo && v[i].get<double>() <= hi;
-        if (!ok)
-            fail(field, "must be an array of " + std::to_string(min_n) +
-                            (max_n > min_n ? " or " + std::to_string(max_n) : std::string()) +
-                            " numbers in [" + json(lo).dump() + ", " + json(hi).dump() + "], got " +
-                            v.dump());
-        return v.get<std::vector<double>>();
-    }
-
-private:
-    const LabData& lab_;
-    const fw::Checkpoint& cp_;
-    size_t index_;
-    const json& check_;
-};
+const char* const kKinds = "image, probe, stat, unit, forbidden, buffer";
 
 bool is_size(const json& v) {
     return v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer();
@@ -104,13 +56,11 @@ CheckKind validated_kind(const CheckWhere& w, const json& check) {
     if (!check.is_object())
         w.fail("", "must be an object like {\"kind\": \"image\", \"points\": 1}");
     if (!check.contains("kind") || !check["kind"].is_string())
-        w.fail("kind", "is missing: it must be one of image, probe, stat, unit, forbidden");
+        w.fail("kind", std::string("is missing: it must be one of ") + kKinds);
     const std::string name = check["kind"];
     auto fields = std::find_if(kFields.begin(), kFields.end(),
                                [&](const auto& f) { return name == name_of(f.first); });
-    if (fields == kFields.end())
-        w.fail("kind",
-               "is \"" + name + "\"; it must be one of image, probe, stat, unit, forbidden");
+    if (fields == kFields.end()) w.fail("kind", "is \"" + name + "\"; it must be one of " + kKinds);
     const CheckKind kind = fields->first;
     std::vector<std::string> allowed = {"kind", "points"};
     if (kind != CheckKind::Unit && kind != CheckKind::Forbidden) allowed.push_back("size");
@@ -281,6 +231,13 @@ Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, co
         case CheckKind::Forbidden:
             c.spec = parse_forbidden(w);
             break;
+        case CheckKind::Buffer: {
+            const auto found = recorded.find({cp.name, index});
+            c.spec = parse_buffer(
+                w, lab, cp,
+                found != recorded.end() && found->second.buffer ? &*found->second.buffer : nullptr);
+            break;
+        }
     }
     return c;
 }
@@ -319,22 +276,25 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
     for (size_t k = 0; k < lab.file.checkpoints.size(); ++k) {
         const fw::Checkpoint& cp = lab.file.checkpoints[k];
         const std::vector<Check>& checks = lab.checks.at(k);
-        bool render = false, depth = false;
+        bool render = false, depth = false, buffers = false;
         for (const Check& check : checks) {
             render = render ||
                      (what == PlanFor::Grading ? check.renders() : check.kind == CheckKind::Image);
             depth = depth || (what == PlanFor::Grading && check.kind == CheckKind::Probe &&
                               check.as<ProbeCheck>().reads_depth());
+            buffers = buffers || (what == PlanFor::Grading && check.kind == CheckKind::Buffer);
         }
         if (render) {
             auto [width, height] = render_size(cp);
             plan.renders.push_back({cp.name, width, height});
-            // "depth": a check reads the depth buffer, so the child writes NAME.pfm.
+            // "depth": a check reads the depth buffer, so the child writes
+            // NAME.pfm; "buffers": a check reads the lab's buffers (NAME.buffers.json).
             plan.job["renders"].push_back({{"name", cp.name},
                                            {"params", cp.params},
                                            {"width", width},
                                            {"height", height},
-                                           {"depth", depth}});
+                                           {"depth", depth},
+                                           {"buffers", buffers}});
         }
         if (what != PlanFor::Grading) continue;
         for (size_t i = 0; i < checks.size(); ++i) {

@@ -19,6 +19,10 @@
 //          what they may not use (e.g. "glm::translate"), "rule": the sheet's
 //          sentence that forbids it; passes when no name occurs in their code
 //          (comments and string literals do not count)
+//   buffer "buffer": a fw::LabBuffer's name, "reference": a buffer reference of
+//          the lab (grading/units/buffer_reference.hpp), "tolerance" (absolute,
+//          per float, default 1e-4); passes when the buffer holds the
+//          reference's elements, each float within the tolerance
 #pragma once
 
 #include <array>
@@ -34,6 +38,7 @@
 #include "grading/results/results.hpp"
 #include "grading/run/child.hpp"
 #include "grading/run/repository.hpp"
+#include "grading/units/buffer_reference.hpp"
 
 namespace grading {
 
@@ -83,10 +88,26 @@ struct ForbiddenCheck {
     std::string rule;                // the sheet's sentence
 };
 
+// A buffer check's expectation and its reference's known mistakes, computed
+// by course from the checkpoint's params when the file is read.
+constexpr double kBufferTolerance = 1e-4;
+struct KnownBufferMistake {
+    std::string id, sentence;  // BufferMistake's
+    BufferExpectation values;
+};
+struct BufferCheck {
+    std::string buffer;                   // the fw::LabBuffer's name
+    std::string reference;                // a BufferReference's name
+    double tolerance = kBufferTolerance;  // absolute, per float
+    std::string element, verb;            // the reference's words: "particle", "is at"
+    BufferExpectation expected;
+    std::vector<KnownBufferMistake> mistakes;
+};
+
 struct Check {
     CheckKind kind = CheckKind::Image;
     double points = 0.0;
-    std::variant<ImageCheck, ProbeCheck, StatCheck, UnitCheck, ForbiddenCheck> spec;
+    std::variant<ImageCheck, ProbeCheck, StatCheck, UnitCheck, ForbiddenCheck, BufferCheck> spec;
     template <class T>
     const T& as() const {
         return std::get<T>(spec);

@@ -1,5 +1,5 @@
 // Judging a lab's checks from what its child wrote. Only raw outputs count:
-// pixels, depth values, stats numbers and unit results; whatever else the
+// pixels, depth values, stats numbers, buffers and unit results; whatever else the
 // child claims (its stats' "params", extra fields) is ignored; child.json
 // gives only the status line of a lab whose programs failed to build.
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include "grading/judge/checks.hpp"
 #include "grading/judge/image_matches.hpp"
 #include "grading/judge/image_words.hpp"
+#include "grading/judge/judge_buffer.hpp"
 #include "grading/judge/judge_source.hpp"
 #include "grading/judge/judge_unit.hpp"
 #include "grading/run/parallel.hpp"
@@ -109,6 +110,15 @@ public:
         return stats_.is_object() ? &stats_ : nullptr;
     }
 
+    const std::vector<fw::LabBuffer>* buffers(std::string& why) {
+        if (!buffers_tried_) {
+            buffers_tried_ = true;
+            has_buffers_ = read_buffers(outputs_, plan_.checkpoint, buffers_, buffers_why_);
+        }
+        why = buffers_why_;
+        return has_buffers_ ? &buffers_ : nullptr;
+    }
+
 private:
     const ChildOutputs& outputs_;
     RenderPlan plan_;
@@ -121,6 +131,9 @@ private:
     bool stats_tried_ = false;
     json stats_;
     std::string stats_why_;
+    bool buffers_tried_ = false, has_buffers_ = false;
+    std::vector<fw::LabBuffer> buffers_;
+    std::string buffers_why_;
 };
 
 void verdict(CheckResult& r, bool pass, const std::string& output) {
@@ -258,6 +271,13 @@ void judge_stat(const StatCheck& check, Frame& frame, CheckResult& r) {
     verdict(r, pass, want + seen);
 }
 
+// A buffer check, against the frame's buffers file.
+void judge_frame_buffer(const BufferCheck& check, Frame& frame, CheckResult& r) {
+    std::string why;
+    const std::vector<fw::LabBuffer>* buffers = frame.buffers(why);
+    judge_buffer(check, buffers, why, r);
+}
+
 }  // namespace
 
 std::string shader_error_status(const ChildOutputs& outputs) {
@@ -341,6 +361,9 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                     break;
                 case CheckKind::Forbidden:
                     judge_forbidden(lab, check.as<ForbiddenCheck>(), outputs.status(), result);
+                    break;
+                case CheckKind::Buffer:
+                    judge_frame_buffer(check.as<BufferCheck>(), *frame, result);
                     break;
                 case CheckKind::Unit:
                     for (const UnitPlan& u : plan.units)

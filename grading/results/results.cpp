@@ -19,6 +19,8 @@ const char* name_of(CheckKind kind) {
             return "unit";
         case CheckKind::Forbidden:
             return "forbidden";
+        case CheckKind::Buffer:
+            return "buffer";
     }
     return "?";
 }

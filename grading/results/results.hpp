@@ -12,9 +12,10 @@ namespace grading {
 
 // The kinds of check (docs/contract.md, Checks), and a checkpoint's
 // visibility; their names are those of checkpoints.json and the reports.
-enum class CheckKind { Image, Probe, Stat, Unit, Forbidden };
+enum class CheckKind { Image, Probe, Stat, Unit, Forbidden, Buffer };
 enum class Visibility { Visible, Hidden };
-const char* name_of(CheckKind kind);         // "image", "probe", "stat", "unit", "forbidden"
+// "image", "probe", "stat", "unit", "forbidden", "buffer"
+const char* name_of(CheckKind kind);
 const char* name_of(Visibility visibility);  // "visible", "hidden"
 // "visible" or "hidden" (fw::Checkpoint::visibility, checked when the file
 // was read); throws fw::Error for anything else.

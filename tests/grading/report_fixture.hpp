@@ -24,8 +24,9 @@ inline grading::CheckResult check(const std::string& lab, const std::string& che
                                   const std::string& visibility = "visible") {
     grading::CheckResult c;
     c.lab = lab, c.checkpoint = checkpoint, c.title = title;
-    for (grading::CheckKind k : {grading::CheckKind::Image, grading::CheckKind::Probe,
-                                 grading::CheckKind::Stat, grading::CheckKind::Unit})
+    for (grading::CheckKind k :
+         {grading::CheckKind::Image, grading::CheckKind::Probe, grading::CheckKind::Stat,
+          grading::CheckKind::Unit, grading::CheckKind::Forbidden, grading::CheckKind::Buffer})
         if (kind == grading::name_of(k)) c.kind = k;
     c.visibility = grading::visibility_named(visibility);
     c.score = score, c.max_score = max_score, c.passed = passed;
