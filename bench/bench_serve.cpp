@@ -281,11 +281,12 @@ Figures serve_figures(const fw::RegisteredLab& lab, const std::string& lab_exe, 
 double floor_fps(fw::OffscreenContext& context, const fw::RegisteredLab& lab, double seconds) {
     fw::LabRenderer renderer(lab, context.info());
     const fw::ParamValues params = fw::default_params(lab);
-    renderer.render(params, 800, 600, 0.0, false);
+    renderer.render(params, 800, 600, 0.0, fw::ReadBack{.depth = false});
     int frames = 0;
     const Clock::time_point t0 = Clock::now();
     while (ms_since(t0) < seconds * 1000) {
-        fw::RenderOutput out = renderer.render(params, 800, 600, ms_since(t0) / 1000.0, false);
+        fw::RenderOutput out =
+            renderer.render(params, 800, 600, ms_since(t0) / 1000.0, fw::ReadBack{.depth = false});
         const std::string jpeg = fw::encode_jpeg(out.color, 85);
         frames += jpeg.empty() ? 0 : 1;
     }
