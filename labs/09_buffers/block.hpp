@@ -5,8 +5,10 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 #include <vector>
 
+#include "framework/gl.hpp"
 #include "framework/names.hpp"
 
 namespace buffers {
@@ -54,6 +56,21 @@ static_assert(sizeof(SceneBlock) == 144, "SceneBlock must be 144 bytes, as std14
 // The block's contents for these values.
 SceneBlock pack_scene(const glm::mat4& mvp, const glm::mat3& normal_matrix, glm::vec3 light,
                       float ambient, glm::vec4 color);
+
+// SceneBlock's member offsets and size three ways, for the frame's stats:
+// "driver", as GL laid the block out in `program` (glGetActiveUniformsiv
+// with GL_UNIFORM_OFFSET, GL_UNIFORM_BLOCK_DATA_SIZE), "struct", as the C++
+// struct lays it out (offsetof, sizeof), and "std140_place", by
+// std140_offsets().
+nlohmann::json block_layouts(const fw::Program& program);
+
+// scene=block's surface: the unit icosphere subdivided 3 times, with its
+// normals (A_POSITION, A_NORMAL) and an index buffer.
+struct Ellipsoid {
+    fw::Buffer vbo, ibo;
+    fw::VertexArray vertices;
+};
+Ellipsoid make_ellipsoid();
 
 }  // namespace buffers
 

@@ -9,12 +9,16 @@
 // geometry shader without rasterization and keep what it writes; use those
 // buffers as the input of the next draw); uniform blocks (std140); GL 4.3's
 // compute stage.
-// GL: glTransformFeedbackVaryings (the Program's `feedback`),
-// glBindTransformFeedback, glBindBufferBase, glBeginTransformFeedback,
-// glEndTransformFeedback, glDrawTransformFeedback, GL_RASTERIZER_DISCARD,
-// GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN; glDispatchCompute,
-// glMemoryBarrier, GL_COMPUTE_WORK_GROUP_SIZE; glBindBufferBase for
-// GL_UNIFORM_BUFFER, glGetActiveUniformsiv(GL_UNIFORM_OFFSET).
+// GL: glBindTransformFeedback, glBindBufferBase, glBeginTransformFeedback,
+// glEndTransformFeedback, glDrawTransformFeedback, glEnable and glDisable of
+// GL_RASTERIZER_DISCARD, the query GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN;
+// glDispatchCompute, glMemoryBarrier, glGetProgramiv
+// (GL_COMPUTE_WORK_GROUP_SIZE); glBindBufferBase for GL_SHADER_STORAGE_BUFFER
+// and GL_UNIFORM_BUFFER, glGetUniformIndices, glGetActiveUniformsiv
+// (GL_UNIFORM_OFFSET), glGetActiveUniformBlockiv; glBindVertexArray with
+// glDrawArrays and glDrawElements. The outputs transform feedback captures
+// are named when a program is linked: the framework does it for
+// programs.load(files, outputs).
 // Student parts (marked TODO): advance_with_feedback() and
 // advance_with_compute() in particles.cpp; std140_place() and pack_scene() in
 // block.cpp; the step in shaders/09_buffers/advance.vert, the work-group size
@@ -26,7 +30,6 @@
 #include "block.hpp"
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
-#include "framework/meshes.hpp"
 #include "parameters.hpp"
 #include "particles.hpp"
 #include "subdivide.hpp"
@@ -57,12 +60,6 @@ constexpr float kBlockExtent = 1.25f, kAmbient = 0.2f;
 constexpr glm::vec4 kBlockColor{0.9f, 0.5f, 0.2f, 1.0f};
 const glm::vec3 kLight = glm::normalize(glm::vec3(1.0f));
 
-// A vertex of the ellipsoid's mesh.
-struct SurfaceVertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-};
-
 }  // namespace
 
 class BuffersLab : public fw::Lab {
@@ -88,7 +85,7 @@ public:
         compute_particles_ = make_compute_particles();
         subdivision_ = make_subdivision_pair();
         written_ = fw::Query(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, "primitives written");
-        upload_ellipsoid();
+        ellipsoid_ = make_ellipsoid();
         fw::BufferDesc desc;
         desc.target = GL_UNIFORM_BUFFER;
         desc.usage = GL_DYNAMIC_DRAW;
@@ -135,7 +132,7 @@ public:
             case Scene::Compute:
                 return {{"work_groups", groups_}, {"work_group_size", work_group_size()}};
             case Scene::Block:
-                return {{"block", block_layouts()}};
+                return {{"block", block_layouts(*sphere_)}};
         }
         return nlohmann::json::object();
     }
@@ -207,24 +204,6 @@ private:
             glDrawTransformFeedback(GL_TRIANGLES, subdivision_.capture[result_].id());
     }
 
-    void upload_ellipsoid() {
-        const fw::MeshData mesh = fw::icosphere(3);
-        std::vector<SurfaceVertex> v;
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-            v.push_back({mesh.positions[i], mesh.normals[i]});
-        ellipsoid_vbo_ = fw::Buffer::from(v, GL_ARRAY_BUFFER, "ellipsoid vertices");
-        ellipsoid_ibo_ =
-            fw::Buffer::from(mesh.indices, GL_ELEMENT_ARRAY_BUFFER, "ellipsoid indices");
-        ellipsoid_ = fw::VertexArray(
-            fw::VertexArrayDesc{.vertices = &ellipsoid_vbo_,
-                                .layout = fw::VertexLayout::of<SurfaceVertex>()
-                                              .attr(A_POSITION, &SurfaceVertex::position)
-                                              .attr(A_NORMAL, &SurfaceVertex::normal),
-                                .indices = &ellipsoid_ibo_,
-                                .index_type = GL_UNSIGNED_INT,
-                                .label = "ellipsoid"});
-    }
-
     void draw_ellipsoid(float angle) {
         const glm::mat4 model = glm::rotate(glm::scale(glm::mat4(1.0f), kEllipsoidScale),
                                             glm::radians(angle), glm::vec3(0.0f, 1.0f, 0.0f));
@@ -238,8 +217,8 @@ private:
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         sphere_->use();
-        glBindVertexArray(ellipsoid_.id());
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(ellipsoid_.index_count()),
+        glBindVertexArray(ellipsoid_.vertices.id());
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(ellipsoid_.vertices.index_count()),
                        GL_UNSIGNED_INT, nullptr);
     }
 
@@ -249,37 +228,14 @@ private:
         return size[0];
     }
 
-    // SceneBlock's member offsets and size three ways: as the driver laid the
-    // block out, as the C++ struct lays it out, and by std140_place().
-    nlohmann::json block_layouts() const {
-        const GLuint program = sphere_->id();
-        const char* names[] = {"mvp", "normal_matrix", "light", "ambient", "color"};
-        GLuint indices[5];
-        GLint offsets[5];
-        glGetUniformIndices(program, 5, names, indices);
-        glGetActiveUniformsiv(program, 5, indices, GL_UNIFORM_OFFSET, offsets);
-        GLint size = 0;
-        glGetActiveUniformBlockiv(program, glGetUniformBlockIndex(program, "SceneBlock"),
-                                  GL_UNIFORM_BLOCK_DATA_SIZE, &size);
-        std::vector<int> driver(offsets, offsets + 5);
-        driver.push_back(size);
-        const std::vector<int> cpp = {
-            int(offsetof(SceneBlock, mvp)),   int(offsetof(SceneBlock, normal_matrix)),
-            int(offsetof(SceneBlock, light)), int(offsetof(SceneBlock, ambient)),
-            int(offsetof(SceneBlock, color)), int(sizeof(SceneBlock))};
-        return {{"driver", driver},
-                {"struct", cpp},
-                {"std140_place", std140_offsets(scene_block_members())}};
-    }
-
     fw::Program *step_ = nullptr, *compute_ = nullptr, *points_ = nullptr;
     fw::Program *subdivide_ = nullptr, *mesh_ = nullptr, *sphere_ = nullptr;
     FeedbackPair feedback_;
     ComputeParticles compute_particles_;
     SubdivisionPair subdivision_;
     fw::Query written_;
-    fw::Buffer ellipsoid_vbo_, ellipsoid_ibo_, scene_block_;
-    fw::VertexArray ellipsoid_;
+    Ellipsoid ellipsoid_;
+    fw::Buffer scene_block_;
     // What the last draw did, for stats() and buffers().
     Scene scene_ = Scene::Feedback;
     int count_ = 0, result_ = 0, groups_ = 0;

@@ -73,7 +73,7 @@ int advance_with_compute(const fw::Program& advance, int count, int steps) {
     // needs a barrier for the way it reads the buffer next.
     // BEGIN SOLUTION
     // STUDENT: (void)advance, (void)count, (void)steps;
-    // STUDENT: return 0;  // TODO: groups from the work-group size; steps dispatches; barriers
+    // STUDENT: return 0;  // TODO: glGetProgramiv, groups, glDispatchCompute, glMemoryBarrier
     GLint size[3] = {1, 1, 1};
     glGetProgramiv(advance.id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
     const int groups = (count + size[0] - 1) / size[0];

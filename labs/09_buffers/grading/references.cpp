@@ -16,7 +16,7 @@ using buffers::GlslType;
 using buffers::Std140Place;
 using grading::BufferExpectation;
 
-// The sheet's numbers (labs/09_buffers/README.md, scene feedback).
+// The sheet's numbers (labs/09_buffers/README.md, The scenes).
 constexpr double kDt = 0.02, kGravity = -4.0, kSourceY = -1.5, kSpeed = 3.0;
 
 int param(const nlohmann::json& params, const char* name, int lo, int hi) {
