@@ -103,8 +103,9 @@ public:
             case Scene::Feedback: {
                 feedback_.buffer[0].update(initial_particles(count_));
                 step_->use();
-                step_->set(kDtUniform, kDt);
-                step_->set(kGravityUniform, kGravity);
+                // Read only by the student's step: set once it is written.
+                step_->set_if_active(kDtUniform, kDt);
+                step_->set_if_active(kGravityUniform, kGravity);
                 written_.begin();
                 result_ = advance_with_feedback(feedback_, *step_, count_, p[kSteps]);
                 written_.end();
@@ -175,9 +176,10 @@ private:
             start.push_back({glm::vec4(q.position, 1.0f), glm::vec4(q.velocity, 0.0f)});
         compute_particles_.buffer.update(start);
         compute_->use();
-        compute_->set(kCountUniform, static_cast<unsigned>(count_));
-        compute_->set(kDtUniform, kDt);
-        compute_->set(kGravityUniform, kGravity);
+        // Read only by the student's step: set once it is written.
+        compute_->set_if_active(kCountUniform, static_cast<unsigned>(count_));
+        compute_->set_if_active(kDtUniform, kDt);
+        compute_->set_if_active(kGravityUniform, kGravity);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, B_PARTICLES, compute_particles_.buffer.id());
         groups_ = advance_with_compute(*compute_, count_, steps);
     }

@@ -796,13 +796,7 @@ constexpr const char* kMistakesJson = R"json(
    "file": "labs/09_buffers/block.cpp",
    "find": "block.normal_matrix[c] = glm::vec4(normal_matrix[c], 0.0f);",
    "replace": "block.normal_matrix[c] = glm::vec4(glm::transpose(normal_matrix)[c], 0.0f);",
-   "why": "stores the normal matrix's rows where std140 expects its columns"},
-  {"id": "buffers-ambient-not-packed",
-   "lab": "09_buffers",
-   "file": "labs/09_buffers/block.cpp",
-   "find": "    block.ambient = ambient;\n",
-   "replace": "",
-   "why": "fills the members it thinks of as the block and forgets the float packed behind light"}
+   "why": "stores the normal matrix's rows where std140 expects its columns"}
 ]}
 )json";
 // END SOLUTION
