@@ -29,6 +29,8 @@ Frame scene_frame(const LabInfo& info, const Frame& frame) {
 }
 
 void reset_write_state() {
+    // With the rasterizer off, glClear is ignored too (GL 4.3, 14.1).
+    glDisable(GL_RASTERIZER_DISCARD);
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);

@@ -39,9 +39,9 @@ struct ReadBack {
 };
 
 // The state that glClear and glBlitFramebuffer obey, as GL starts: the
-// scissor test off, and colour, depth and stencil writes on. A lab may leave
-// them otherwise; the renderer and the window set them back before a clear
-// or a copy.
+// rasterizer and colour, depth and stencil writes on, the scissor test off.
+// A lab may leave them otherwise; the renderer and the window set them back
+// before a clear or a copy.
 void reset_write_state();
 
 class LabRenderer {

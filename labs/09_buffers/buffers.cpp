@@ -97,8 +97,6 @@ public:
     void draw(const fw::ParamValues& p, const fw::Frame&) override {
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_CULL_FACE);
-        // Whatever an earlier frame left, this one is rasterized.
-        glDisable(GL_RASTERIZER_DISCARD);
         scene_ = p[kScene];
         count_ = p[kCount];
         switch (scene_) {

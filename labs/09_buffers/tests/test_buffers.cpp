@@ -199,3 +199,15 @@ TEST_CASE("buffers: checkpoints.json: its probes and stats hold for the solution
         CHECK(std::count(scenes.begin(), scenes.end(), scene) >= 1);
     }
 }
+
+TEST_CASE("buffers: a frame after one that left the rasterizer off is cleared and drawn") {
+    Lab lab;
+    lab.render({{"scene", "feedback"}});
+    // As a feedback loop that never turns the rasterizer back on leaves it:
+    // glClear would then be ignored too (GL 4.3, 14.1).
+    glEnable(GL_RASTERIZER_DISCARD);
+    const fw::RenderOutput out = lab.render({{"scene", "block"}});
+    CHECK(
+        fw::test::near(fw::test::rgb_at(out.color, 256, 256), {0.5995f, 0.3331f, 0.1332f}, 0.02f));
+    CHECK(fw::test::near(fw::test::rgb_at(out.color, 5, 5), {0, 0, 0}, 0.0f));
+}
