@@ -10,16 +10,18 @@
 // the geometry stage's inputs (triangles_adjacency: 6 vertices) and outputs
 // (line_strip, gl_Layer, gl_ViewportIndex); layered rendering into a cube
 // map's 6 layers; the primitive types GL_TRIANGLES_ADJACENCY.
-// GL: glVertexAttribPointer, glEnableVertexAttribArray, glVertexAttribDivisor,
-// glDrawElementsInstanced, glDrawArraysInstanced; glEnable and glDisable of
-// GL_CLIP_DISTANCE0; glFramebufferTexture (in fw::CubeFramebuffer: a cube
-// map attached whole, as layers); a samplerCube; glDrawElements with
+// GL: glBindBuffer, glVertexAttribPointer, glEnableVertexAttribArray,
+// glVertexAttribDivisor, glDrawElementsInstanced, glDrawArraysInstanced;
+// glEnable and glDisable of GL_CLIP_DISTANCE0; glBindFramebuffer and
+// glViewport around the draw into a fw::CubeFramebuffer (a cube map attached
+// whole, as layers, by the framework), a samplerCube; glDrawElements with
 // GL_TRIANGLES_ADJACENCY; glBindVertexArray, glDrawArrays, glDrawElements.
 // Student parts (marked TODO): draw_instances() in instances.cpp,
 // draw_clipped() below, cube_face_view() in layers.cpp, adjacency_indices()
 // in silhouette.cpp; the instance's cell in shaders/10_advanced_geometry/
 // grid.vert, the clip distance in sphere.vert, the six faces in layers.geom
 // and the outline in silhouette.geom.
+#include <cmath>
 #include <cstdint>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -77,14 +79,20 @@ struct SphereVertex {
 
 }  // namespace
 
-// Draws the sphere (its program in use, u_plane set) with clip distance 0
-// on, so that only n . p + d >= 0 remains, and turns it off again: the
-// next draw's shaders may not write gl_ClipDistance[0].
-void draw_clipped(const fw::VertexArray& sphere, GLsizei count) {
-    glBindVertexArray(sphere.id());
+// Draws the sphere with `sphere` (in use, its projection set) cut by the
+// plane (n, d): n at `angle` degrees from +x towards +y in the xy plane,
+// d = `offset`. Clip distance 0 is on for this draw only: the next draw's
+// shaders may not write gl_ClipDistance[0], and a distance that is not
+// enabled is ignored (GL 4.3 core, 13.5).
+void draw_clipped(const fw::Program& sphere, const fw::VertexArray& mesh, GLsizei count,
+                  float angle, float offset) {
+    glBindVertexArray(mesh.id());
     // BEGIN SOLUTION
-    // STUDENT: // TODO: GL_CLIP_DISTANCE0 on for this draw only
+    // STUDENT: (void)sphere, (void)angle, (void)offset;  // TODO: set u_plane to (n, d), then
+    // STUDENT: // draw with GL_CLIP_DISTANCE0 on: glEnable before, glDisable after
     // STUDENT: glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+    const float a = glm::radians(angle);
+    sphere.set_if_active(kPlaneUniform, glm::vec4(std::cos(a), std::sin(a), 0.0f, offset));
     glEnable(GL_CLIP_DISTANCE0);
     glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
     glDisable(GL_CLIP_DISTANCE0);
@@ -152,17 +160,14 @@ public:
                 draw_instances(grid_mesh_, columns * rows);
                 break;
             }
-            case Scene::Clip: {
-                const float a = glm::radians(static_cast<float>(p[kClipAngle]));
+            case Scene::Clip:
                 glEnable(GL_DEPTH_TEST);
                 glDepthFunc(GL_LESS);
                 sphere_->use();
                 sphere_->set(kProjectionUniform, kOrtho);
-                sphere_->set_if_active(kPlaneUniform,
-                                       glm::vec4(std::cos(a), std::sin(a), 0.0f, p[kClipOffset]));
-                draw_clipped(sphere_mesh_.vertex_array, sphere_mesh_.count);
+                draw_clipped(*sphere_, sphere_mesh_.vertex_array, sphere_mesh_.count, p[kClipAngle],
+                             p[kClipOffset]);
                 break;
-            }
             case Scene::Layers:
                 draw_layers(p[kFaceSize]);
                 break;

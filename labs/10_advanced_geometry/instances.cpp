@@ -43,8 +43,10 @@ void draw_instances(const InstanceGrid& grid, int count) {
     // instance instead of once per vertex. Then one draw makes every
     // instance, each with its own gl_InstanceID.
     // BEGIN SOLUTION
-    // STUDENT: (void)count;  // TODO: A_COLOR from grid.colors, one per instance, and one
-    // STUDENT: glBindVertexArray(grid.vertices.id());  // instanced draw of `count` quads
+    // STUDENT: (void)count;  // TODO: A_COLOR from grid.colors: glBindBuffer,
+    // STUDENT: // glVertexAttribPointer, glEnableVertexAttribArray, glVertexAttribDivisor;
+    // STUDENT: // then one glDrawElementsInstanced of `count` quads
+    // STUDENT: glBindVertexArray(grid.vertices.id());
     // STUDENT: glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(grid.vertices.id());
     glBindBuffer(GL_ARRAY_BUFFER, grid.colors.id());

@@ -28,18 +28,20 @@ void add_square(std::vector<glm::vec3>& out, glm::vec3 c, glm::vec3 u, glm::vec3
 }  // namespace
 
 std::vector<glm::vec3> layer_world() {
+    // The room's walls, then the markers: squares at +-distance on each
+    // axis k, their sides along the two other axes.
+    struct Squares {
+        float distance, half;
+    };
     std::vector<glm::vec3> out;
-    // Each axis k with the two others, i and j: the room's two walls at -3
-    // and +3 on k, then the markers at -1 and +1.
-    for (float half : {3.0f, 0.5f})
+    for (const Squares q : {Squares{3.0f, 3.0f}, Squares{1.0f, 0.5f}})
         for (int k = 0; k < 3; ++k) {
             glm::vec3 axis(0.0f), i(0.0f), j(0.0f);
-            axis[k] = 1.0f;
-            i[(k + 1) % 3] = half;
-            j[(k + 2) % 3] = half;
-            const float distance = half == 3.0f ? 3.0f : 1.0f;
-            add_square(out, distance * axis, i, j);
-            add_square(out, -distance * axis, i, j);
+            axis[k] = q.distance;
+            i[(k + 1) % 3] = q.half;
+            j[(k + 2) % 3] = q.half;
+            add_square(out, axis, i, j);
+            add_square(out, -axis, i, j);
         }
     return out;
 }

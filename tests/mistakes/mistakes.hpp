@@ -822,12 +822,12 @@ constexpr const char* kMistakesJson = R"json(
    "find": "int column = gl_InstanceID % u_columns, row = gl_InstanceID / u_columns;",
    "replace": "int column = gl_InstanceID / u_rows, row = gl_InstanceID % u_rows;",
    "why": "counts the instances up each column first, while the colours run along the rows"},
-  {"id": "advanced-geometry-clip-not-enabled",
+  {"id": "advanced-geometry-plane-angle-in-degrees",
    "lab": "10_advanced_geometry",
    "file": "labs/10_advanced_geometry/advanced_geometry.cpp",
-   "find": "    glEnable(GL_CLIP_DISTANCE0);\n",
-   "replace": "",
-   "why": "writes gl_ClipDistance[0] in the shader but never enables GL_CLIP_DISTANCE0, so nothing is clipped"},
+   "find": "const float a = glm::radians(angle);",
+   "replace": "const float a = angle;",
+   "why": "hands the plane's angle in degrees to cos and sin, which take radians"},
   {"id": "advanced-geometry-clip-space-plane",
    "lab": "10_advanced_geometry",
    "file": "shaders/10_advanced_geometry/sphere.vert",
@@ -868,9 +868,9 @@ constexpr const char* kMistakesJson = R"json(
   {"id": "advanced-geometry-own-corner",
    "lab": "10_advanced_geometry",
    "file": "labs/10_advanced_geometry/silhouette.cpp",
-   "find": "out.push_back(across != third.end() ? across->second : triangles[t + (e + 2) % 3]);",
-   "replace": "out.push_back(triangles[t + (e + 2) % 3]);",
-   "why": "gives each edge the triangle's own third corner instead of the neighbour's, so every edge of a front face is outline"}
+   "find": "const auto across = third.find({b, a});",
+   "replace": "const auto across = third.find({a, b});",
+   "why": "looks up the edge in its own direction, which finds the triangle itself, so every edge of a front face is outline"}
 ]}
 )json";
 // END SOLUTION
