@@ -5,6 +5,7 @@
 #include <glad/gl.h>
 
 #include "framework/gl/buffer.hpp"
+#include "framework/gl/cube_map.hpp"
 #include "framework/gl/debug.hpp"
 #include "framework/gl/framebuffer.hpp"
 #include "framework/gl/program.hpp"

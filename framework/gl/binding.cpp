@@ -60,6 +60,11 @@ ScopedBinding bind_texture_2d_scoped(GLuint id) {
             [](GLenum t, GLint v) { glBindTexture(t, static_cast<GLuint>(v)); }};
 }
 
+ScopedBinding bind_texture_cube_scoped(GLuint id) {
+    return {GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP, static_cast<GLint>(id),
+            [](GLenum t, GLint v) { glBindTexture(t, static_cast<GLuint>(v)); }};
+}
+
 ScopedBinding bind_framebuffer_scoped(GLenum target, GLuint id) {
     return {target, framebuffer_binding_query(target), static_cast<GLint>(id),
             [](GLenum t, GLint v) { glBindFramebuffer(t, static_cast<GLuint>(v)); }};

@@ -39,6 +39,8 @@ private:
 ScopedBinding bind_buffer_scoped(GLenum target, GLuint id);
 // glBindTexture(GL_TEXTURE_2D, id) on the active texture unit, for the scope.
 ScopedBinding bind_texture_2d_scoped(GLuint id);
+// glBindTexture(GL_TEXTURE_CUBE_MAP, id) on the active texture unit, for the scope.
+ScopedBinding bind_texture_cube_scoped(GLuint id);
 // glBindFramebuffer(target, id) for the scope; target GL_DRAW_FRAMEBUFFER or
 // GL_READ_FRAMEBUFFER (another throws fw::Error).
 ScopedBinding bind_framebuffer_scoped(GLenum target, GLuint id);

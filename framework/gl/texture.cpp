@@ -8,11 +8,6 @@ namespace fw {
 
 namespace {
 
-bool uses_mipmaps(GLenum min_filter) {
-    return min_filter == GL_NEAREST_MIPMAP_NEAREST || min_filter == GL_LINEAR_MIPMAP_NEAREST ||
-           min_filter == GL_NEAREST_MIPMAP_LINEAR || min_filter == GL_LINEAR_MIPMAP_LINEAR;
-}
-
 int full_mip_chain(int width, int height) {
     int levels = 1;
     for (int size = width > height ? width : height; size > 1; size /= 2) ++levels;
@@ -34,6 +29,11 @@ void upload(GLuint id, int width, int height, const void* data, GLenum format, G
 
 }  // namespace
 
+bool is_mipmap_filter(GLenum min_filter) {
+    return min_filter == GL_NEAREST_MIPMAP_NEAREST || min_filter == GL_LINEAR_MIPMAP_NEAREST ||
+           min_filter == GL_NEAREST_MIPMAP_LINEAR || min_filter == GL_LINEAR_MIPMAP_LINEAR;
+}
+
 Texture2D::Texture2D(const Texture2DDesc& desc)
     : width_(desc.width),
       height_(desc.height),
@@ -49,7 +49,7 @@ Texture2D::Texture2D(const Texture2DDesc& desc)
         throw UsageError("Texture2DDesc.height must be 1 to GL_MAX_TEXTURE_SIZE (" +
                          std::to_string(max_size) + "), not " + std::to_string(desc.height) +
                          where);
-    build_mipmaps_ = desc.levels == 0 && uses_mipmaps(desc.min_filter);
+    build_mipmaps_ = desc.levels == 0 && is_mipmap_filter(desc.min_filter);
     const int chain = full_mip_chain(width_, height_);
     if (desc.levels < 0 || desc.levels > chain)
         throw UsageError("Texture2DDesc.levels must be 0 (as min_filter needs) or 1 to " +

@@ -33,6 +33,9 @@ struct Texture2DDesc {
     std::string label;
 };
 
+// Whether a minification filter reads mipmaps (GL_*_MIPMAP_*).
+bool is_mipmap_filter(GLenum min_filter);
+
 class Texture2D {
 public:
     Texture2D() = default;
