@@ -22,7 +22,45 @@ std::size_t index_size_of(GLenum type) {
     }
 }
 
+// The vertex array bound in this thread's current context, as far as the
+// wrapper knows it: set by the wrapper's own binds, and forgotten by any
+// other glBindVertexArray or glDeleteVertexArrays (a lab's raw call, a scoped
+// binding's restore), which track_vertex_array_binding() routes through
+// forget_binding(). kUnknown until GL is loaded, and after a context is made.
+constexpr GLuint kUnknown = ~GLuint{0};
+thread_local GLuint known_binding = kUnknown;
+PFNGLBINDVERTEXARRAYPROC driver_bind = nullptr;
+PFNGLDELETEVERTEXARRAYSPROC driver_delete = nullptr;
+
+void GLAD_API_PTR bind_and_forget(GLuint id) {
+    known_binding = kUnknown;
+    driver_bind(id);
+}
+
+void GLAD_API_PTR delete_and_forget(GLsizei n, const GLuint* ids) {
+    known_binding = kUnknown;
+    driver_delete(n, ids);
+}
+
 }  // namespace
+
+namespace detail {
+
+void track_vertex_array_binding() {
+    known_binding = kUnknown;
+    // gladLoadGL has just set both pointers to the driver's functions.
+    if (glad_glBindVertexArray == nullptr || glad_glDeleteVertexArrays == nullptr) return;
+    if (glad_glBindVertexArray != &bind_and_forget) {
+        driver_bind = glad_glBindVertexArray;
+        glad_glBindVertexArray = &bind_and_forget;
+    }
+    if (glad_glDeleteVertexArrays != &delete_and_forget) {
+        driver_delete = glad_glDeleteVertexArrays;
+        glad_glDeleteVertexArrays = &delete_and_forget;
+    }
+}
+
+}  // namespace detail
 
 VertexLayout& VertexLayout::add(const VertexAttribute& a) {
     for (const VertexAttribute& b : attributes_)
@@ -117,7 +155,20 @@ VertexArray VertexArray::blank(std::string label) {
     return vao;
 }
 
-void VertexArray::bind() const { glBindVertexArray(id()); }
+void VertexArray::bind() const {
+    if (glad_glBindVertexArray != &bind_and_forget) {  // not tracked: GL loaded elsewhere
+        glBindVertexArray(id());
+        return;
+    }
+    driver_bind(id());
+    known_binding = id();
+}
+
+void VertexArray::bind_for_draw() const {
+    // Raw GL binds a vertex array once for many draws; the wrapper does the
+    // same unless something else may have bound another since its last bind.
+    if (known_binding != id()) bind();
+}
 
 void VertexArray::draw(GLenum mode, GLsizei count, GLint first) const {
     if (id() == 0) throw UsageError("VertexArray::draw on an empty VertexArray");
@@ -126,7 +177,7 @@ void VertexArray::draw(GLenum mode, GLsizei count, GLint first) const {
         throw UsageError("VertexArray " + quoted_label(label_) + ": draw of vertices [" +
                          std::to_string(first) + ", " + std::to_string(first + count) +
                          ") but its vertex buffer holds " + std::to_string(vertex_count_));
-    bind();
+    bind_for_draw();
     glDrawArrays(mode, first, count);
 }
 
@@ -140,7 +191,7 @@ void VertexArray::draw_indexed(GLenum mode, GLsizei count, std::size_t first_ind
                          std::to_string(first_index) + ", " +
                          std::to_string(first_index + static_cast<std::size_t>(count)) +
                          ") but its index buffer holds " + std::to_string(index_count_));
-    bind();
+    bind_for_draw();
     // With an element array buffer bound, the "indices" pointer argument is
     // a byte offset into that buffer.
     const void* offset = reinterpret_cast<const void*>(first_index * index_size_);

@@ -80,6 +80,12 @@ struct AttribFormat<glm::vec<N, unsigned, Q>> : Format<N, GL_UNSIGNED_INT, true,
 // Bytes read as floats in [0, 1]: compact colours.
 template <glm::length_t N, glm::qualifier Q>
 struct AttribFormat<glm::vec<N, std::uint8_t, Q>> : Format<N, GL_UNSIGNED_BYTE, false, true> {};
+
+// Routes glBindVertexArray and glDeleteVertexArrays through the wrapper, so
+// that a draw binds its vertex array only when another may be bound: after
+// the lab's own glBindVertexArray, a deletion, or a new context. Called by
+// load_gl_and_check() right after gladLoadGL, for each context made.
+void track_vertex_array_binding();
 }  // namespace detail
 
 class VertexLayout {
@@ -146,16 +152,19 @@ public:
     // glBindVertexArray(id()).
     void bind() const;
 
-    // Binds, then glDrawArrays(mode, first, count). Throws UsageError if
+    // Binds (unless the wrapper itself bound this vertex array last and
+    // nothing has bound another since), then glDrawArrays(mode, first, count). Throws UsageError if
     // [first, first + count) is not inside the vertex buffer.
     void draw(GLenum mode, GLsizei count, GLint first = 0) const;
 
-    // Binds, then glDrawElements(mode, count, index_type, offset of
+    // Binds as draw() does, then glDrawElements(mode, count, index_type, offset of
     // first_index). Throws UsageError without an index buffer or if the
     // indices are out of range.
     void draw_indexed(GLenum mode, GLsizei count, std::size_t first_index = 0) const;
 
 private:
+    void bind_for_draw() const;
+
     detail::Handle handle_;
     std::string label_;
     std::size_t vertex_count_ = 0;

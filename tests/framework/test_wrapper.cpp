@@ -10,6 +10,7 @@
 
 #include "framework/error.hpp"
 #include "framework/gl.hpp"
+#include "framework/gl/binding.hpp"
 #include "framework/lab.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -236,6 +237,66 @@ TEST_CASE("vertex array: a blank one described by hand draws as one described by
     MESSAGE("pixels covered " << covered);
     CHECK(covered > 800);
     CHECK(a.pixels == b.pixels);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("vertex array: a draw never uses a binding the lab changed since the wrapper's last") {
+    // Red on the left half, green on the right: which one a draw used shows.
+    fw::Buffer left_vbo = fw::Buffer::from(quad(-1, -1, 0, 1, 0, kRed), GL_ARRAY_BUFFER, "left");
+    fw::Buffer right_vbo = fw::Buffer::from(quad(0, -1, 1, 1, 0, kGreen), GL_ARRAY_BUFFER, "right");
+    fw::VertexArray left({.vertices = &left_vbo, .layout = color_layout(), .label = "left"});
+    fw::VertexArray right({.vertices = &right_vbo, .layout = color_layout(), .label = "right"});
+    fw::Program prog = fw::Program::from_files({"tests/color.vert", "tests/color.frag"});
+    prog.use();
+    fw::Framebuffer fb({32, 32, "stale binding"});
+    fb.bind();
+    // Which halves a wrapper draw of `left` coloured, after `between` ran.
+    auto draw_left_after = [&](const std::function<void()>& between) {
+        clear_black();
+        left.draw(GL_TRIANGLES, 6);  // the wrapper binds `left` and knows it
+        clear_black();
+        between();
+        left.draw(GL_TRIANGLES, 6);
+        fw::check_gl("draw after a raw call");
+        const fw::Image img = fb.read_color();
+        return std::pair{img.at(8, 16), img.at(24, 16)};
+    };
+    const fw::Rgba8 red{255, 0, 0, 255}, green{0, 255, 0, 255}, black{0, 0, 0, 255};
+    const std::vector<std::pair<std::string, std::function<void()>>> cases = {
+        {"nothing", [] {}},
+        {"glBindVertexArray(right)", [&] { glBindVertexArray(right.id()); }},
+        {"glBindVertexArray(0)", [] { glBindVertexArray(0); }},
+        {"right.bind()", [&] { right.bind(); }},
+        {"a scoped binding of right, restored",
+         [&] { const fw::ScopedBinding b = fw::bind_vertex_array_scoped(right.id()); }},
+        {"raw draws of right", [&] {
+             glBindVertexArray(right.id());
+             glDrawArrays(GL_TRIANGLES, 0, 6);
+         }}};
+    for (const auto& [name, between] : cases) {
+        CAPTURE(name);
+        const auto [l, r] = draw_left_after(between);
+        CHECK(l == red);
+        CHECK(r == (name == "raw draws of right" ? green : black));
+    }
+    // A vertex array deleted and its name reused: the new one is bound anew.
+    GLuint reused = 0;
+    {
+        fw::Buffer vbo = fw::Buffer::from(quad(0, -1, 1, 1, 0, kBlue), GL_ARRAY_BUFFER, "blue");
+        fw::VertexArray blue({.vertices = &vbo, .layout = color_layout(), .label = "blue"});
+        clear_black();
+        blue.draw(GL_TRIANGLES, 6);
+        reused = blue.id();
+    }
+    fw::Buffer vbo = fw::Buffer::from(quad(-1, -1, 0, 1, 0, kWhite), GL_ARRAY_BUFFER, "white");
+    fw::VertexArray white({.vertices = &vbo, .layout = color_layout(), .label = "white"});
+    MESSAGE("deleted name " << reused << ", new name " << white.id());
+    clear_black();
+    white.draw(GL_TRIANGLES, 6);
+    const fw::Image img = fb.read_color();
+    CHECK(img.at(8, 16) == fw::Rgba8{255, 255, 255, 255});
+    CHECK(img.at(24, 16) == black);
+    glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -116,3 +116,13 @@ struct CommandResult {
 CommandResult run_command(const std::string& command);
 
 }  // namespace fw::test
+
+// Pixels print as "rgba(255, 0, 0, 255)" in a failed CHECK.
+template <>
+struct doctest::StringMaker<fw::Rgba8> {
+    static doctest::String convert(const fw::Rgba8& p) {
+        const std::string s = "rgba(" + std::to_string(p.r) + ", " + std::to_string(p.g) + ", " +
+                              std::to_string(p.b) + ", " + std::to_string(p.a) + ")";
+        return s.c_str();
+    }
+};
