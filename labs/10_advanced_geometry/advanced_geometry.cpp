@@ -233,8 +233,10 @@ private:
         glDrawElements(GL_TRIANGLES, cube_.count, GL_UNSIGNED_INT, nullptr);
         glDisable(GL_DEPTH_TEST);
         outline_->use();
-        outline_->set(kModelUniform, model);
-        outline_->set(kProjectionUniform, kOrtho);
+        // Until silhouette.geom emits a vertex, cube.vert's output is unused
+        // and a compiler (Mesa 25) may drop its uniforms.
+        outline_->set_if_active(kModelUniform, model);
+        outline_->set_if_active(kProjectionUniform, kOrtho);
         outline_->set(kColorUniform, kOutlineColor);
         glBindVertexArray(cube_adjacency_.vertex_array.id());
         glDrawElements(GL_TRIANGLES_ADJACENCY, cube_adjacency_.count, GL_UNSIGNED_INT, nullptr);
