@@ -60,6 +60,8 @@ void track_vertex_array_binding() {
     }
 }
 
+bool vertex_array_binding_known() { return known_binding != kUnknown; }
+
 }  // namespace detail
 
 VertexLayout& VertexLayout::add(const VertexAttribute& a) {

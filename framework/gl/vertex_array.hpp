@@ -86,6 +86,9 @@ struct AttribFormat<glm::vec<N, std::uint8_t, Q>> : Format<N, GL_UNSIGNED_BYTE, 
 // the lab's own glBindVertexArray, a deletion, or a new context. Called by
 // load_gl_and_check() right after gladLoadGL, for each context made.
 void track_vertex_array_binding();
+// Whether the wrapper knows which vertex array is bound in this thread (what
+// the tests of the routing above read).
+bool vertex_array_binding_known();
 }  // namespace detail
 
 class VertexLayout {

@@ -279,6 +279,14 @@ TEST_CASE("vertex array: a draw never uses a binding the lab changed since the w
         CHECK(l == red);
         CHECK(r == (name == "raw draws of right" ? green : black));
     }
+    // Any glDeleteVertexArrays forgets the binding, even of a name never bound
+    // (after a deletion, a name may come back as a new vertex array).
+    left.draw(GL_TRIANGLES, 6);
+    CHECK(fw::detail::vertex_array_binding_known());
+    GLuint never_bound = 0;
+    glGenVertexArrays(1, &never_bound);
+    glDeleteVertexArrays(1, &never_bound);
+    CHECK_FALSE(fw::detail::vertex_array_binding_known());
     // A vertex array deleted and its name reused: the new one is bound anew.
     GLuint reused = 0;
     {
