@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "framework/image.hpp"
 
@@ -51,12 +52,22 @@ CompareResult compare_images(const Image& actual, const Image& expected,
     }
     const int w = actual.width, h = actual.height, r = std::max(0, opt.radius);
     res.total_pixels = static_cast<long>(w) * h;
-    res.difference = Image(w, h);
+    if (opt.difference) res.difference = Image(w, h);
     res.failed.assign(static_cast<size_t>(w) * h, 0);
+    auto grey = [](Rgba8 a) {
+        const std::uint8_t g = quarter_luminance(a);
+        return Rgba8{g, g, g, 255};
+    };
     for (int y = 0; y < h; ++y) {
         const Rgba8* a_row = &actual.at(0, y);
         const Rgba8* e_row = &expected.at(0, y);
-        Rgba8* d_row = &res.difference.at(0, y);
+        Rgba8* d_row = opt.difference ? &res.difference.at(0, y) : nullptr;
+        if (std::memcmp(a_row, e_row, static_cast<size_t>(w) * sizeof(Rgba8)) == 0) {
+            // Every pixel equals its reference in place: an error of 0.
+            if (d_row)
+                for (int x = 0; x < w; ++x) d_row[x] = grey(a_row[x]);
+            continue;
+        }
         for (int x = 0; x < w; ++x) {
             const Rgba8 a = a_row[x];
             int best = channel_error(a, e_row[x]);
@@ -69,10 +80,9 @@ CompareResult compare_images(const Image& actual, const Image& expected,
             if (best > opt.tolerance) {
                 ++res.failed_pixels;
                 res.failed[static_cast<size_t>(y) * w + x] = 1;
-                d_row[x] = heat(best, opt.tolerance);
-            } else {
-                const std::uint8_t grey = quarter_luminance(a);
-                d_row[x] = {grey, grey, grey, 255};
+                if (d_row) d_row[x] = heat(best, opt.tolerance);
+            } else if (d_row) {
+                d_row[x] = grey(a);
             }
         }
     }

@@ -167,16 +167,21 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
     } catch (const fw::Error& e) {
         return verdict(r, false, std::string(e.what()) + "; run course bless to write it again");
     }
-    fw::CompareResult c = fw::compare_images(*image, reference, opt);
+    fw::CompareOptions verdict_only = opt;
+    verdict_only.difference = false;
+    fw::CompareResult c = fw::compare_images(*image, reference, verdict_only);
     r.expected = lab.id + "/" + cp.name + ".expected.png";
     // The reference is course's own file: copied, not encoded again.
     std::error_code ec;
     std::filesystem::copy_file(ref_path, out_dir + "/" + r.expected,
                                std::filesystem::copy_options::overwrite_existing, ec);
     if (ec) throw fw::Error("cannot copy " + ref_path + " into the report: " + ec.message());
-    if (!c.size_mismatch) {
+    // Where no pixel is beyond the tolerance, the difference image would be
+    // the rendered frame in grey: none is written.
+    if (!c.size_mismatch && c.failed_pixels > 0) {
         r.difference = lab.id + "/" + cp.name + ".diff.png";
-        fw::write_png(out_dir + "/" + r.difference, c.difference);
+        fw::write_png(out_dir + "/" + r.difference,
+                      fw::compare_images(*image, reference, opt).difference);
     }
     std::string where = c.passed ? "" : describe_difference(*image, reference, c);
     if (!c.passed && !c.size_mismatch)

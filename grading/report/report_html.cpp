@@ -102,11 +102,14 @@ class ImageTable {
 public:
     explicit ImageTable(const std::string& out_dir) : out_dir_(out_dir) {}
 
-    // The figure for `relative` (under out_dir), or a note saying why there is none.
-    std::string figure(const std::string& caption, const std::string& relative) {
+    // The figure for `relative` (under out_dir), or a note saying why there
+    // is none (`none`, else "no CAPTION image").
+    std::string figure(const std::string& caption, const std::string& relative,
+                       const std::string& none = "") {
         std::string body;
         if (relative.empty()) {
-            body = "<div class=\"missing\">no " + caption + " image</div>";
+            body = "<div class=\"missing\">" + (none.empty() ? "no " + caption + " image" : none) +
+                   "</div>";
         } else {
             const Entry& e = entry(relative);
             body = e.css_class.empty()
@@ -205,7 +208,11 @@ std::string card_html(const LabResult& lab, const CheckpointResult& cp, const st
                     [](const CheckResult* c) { return c->kind == CheckKind::Image; });
     if (has_image)
         h << "<div class=\"images\">" << images.figure("rendered", cp.rendered)
-          << images.figure("expected", cp.expected) << images.figure("difference", cp.difference)
+          << images.figure("expected", cp.expected)
+          << images.figure("difference", cp.difference,
+                           cp.rendered.empty() || cp.expected.empty() || cp.image_failed
+                               ? ""
+                               : "no pixel differs beyond the tolerance")
           << "</div>\n";
     else if (!cp.rendered.empty())  // probes and stats: the frame they were read from
         h << "<div class=\"images small\">" << images.figure("rendered", cp.rendered) << "</div>\n";

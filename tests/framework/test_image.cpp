@@ -372,6 +372,32 @@ TEST_CASE("compare: a one-pixel edge shift passes, a 10-pixel move fails") {
     CHECK(moved.difference.at(5, 5) == Rgba8{0, 0, 0, 255});
 }
 
+TEST_CASE("compare: without the difference image, the same verdict to the pixel") {
+    // Rows equal to the reference (the memcmp path), rows that differ within
+    // the tolerance, and a moved rectangle's rows that fail.
+    const Image expected = rect_image(64, 64, 20, 20, 40, 40);
+    Image actual = rect_image(64, 64, 30, 20, 50, 40);
+    for (int x = 0; x < 64; ++x) actual.at(x, 5).g = 6;
+    fw::CompareOptions no_difference;
+    no_difference.difference = false;
+    const fw::CompareResult with = fw::compare_images(actual, expected);
+    const fw::CompareResult without = fw::compare_images(actual, expected, no_difference);
+    CHECK(without.difference.pixels.empty());
+    CHECK(with.difference.width == 64);
+    CHECK(without.passed == with.passed);
+    CHECK(without.failed_pixels == with.failed_pixels);
+    CHECK(without.failed_pixels == 9 * 20 + 9 * 18);
+    CHECK(without.max_channel_error == with.max_channel_error);
+    CHECK(without.failed == with.failed);
+    CHECK(without.summary() == with.summary());
+    // One channel off in one pixel of an otherwise equal row is seen.
+    Image one_off = expected;
+    one_off.at(63, 63).a = 0;
+    const fw::CompareResult single = fw::compare_images(one_off, expected, no_difference);
+    CHECK(single.failed_pixels == 1);
+    CHECK(single.max_channel_error == 255);
+}
+
 TEST_CASE("compare: a recoloured object fails") {
     Image expected = rect_image(64, 64, 20, 20, 40, 40);
     Image actual = rect_image(64, 64, 20, 20, 40, 40, {200, 0, 0, 255});

@@ -21,6 +21,30 @@ const json* find_named(const json& tests, const std::string& part) {
     return nullptr;
 }
 
+// Checks that each checkpoint of `lab` with an image check has its rendered
+// and expected images in the report, and a difference image exactly where
+// the check's Observed line counts pixels beyond the tolerance; returns how
+// many difference images there are.
+int check_report_images(const json& results, const std::string& out, const std::string& lab) {
+    const std::regex observed("Observed: ([0-9]+) of [0-9]+ pixels");
+    int differences = 0, images = 0;
+    for (const json& t : results["tests"]) {
+        const std::string name = t.value("name", ""), output = t.value("output", "");
+        std::smatch m;
+        if (name.rfind(lab + " / ", 0) != 0 || !std::regex_search(output, m, observed)) continue;
+        const std::string base = out + "/" + lab + "/" + name.substr(lab.size() + 3);
+        CAPTURE(base);
+        ++images;
+        CHECK(fs::exists(base + ".png"));
+        CHECK(fs::exists(base + ".expected.png"));
+        const bool differs = std::stol(m[1]) > 0;
+        CHECK(fs::exists(base + ".diff.png") == differs);
+        differences += differs;
+    }
+    CHECK(images > 0);
+    return differences;
+}
+
 }  // namespace
 
 TEST_CASE("course grade pipeline: full marks on each backend") {
@@ -48,17 +72,25 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
         REQUIRE(unit);
         CHECK((*unit)["output"].get<std::string>().find("102 of 102 cases passed") !=
               std::string::npos);
-        for (const char* image :
-             {"order_depth.png", "order_depth.expected.png", "order_depth.diff.png"}) {
-            CAPTURE(image);
-            CHECK(fs::exists(out + "/pipeline/" + image));
-        }
+        if (check_report_images(g.results, out, "pipeline") == 0)
+            CHECK(fw::test::read_text(out + "/index.html")
+                      .find("no pixel differs beyond the tolerance") != std::string::npos);
         CHECK(g.output.find("pipeline") != std::string::npos);
     }
     if (graded == 0) {
         std::printf("SKIP: neither osmesa nor egl renders here\n");
         std::exit(77);
     }
+}
+
+TEST_CASE("course grade: a difference image for each frame whose pixels differ") {
+    const std::string out = fw::test::out_dir() + "/liar";
+    // Black frames where lab 0 draws triangles on a grey background.
+    Graded g =
+        grade("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=liar", "pipeline --lab " + fake_lab(), out);
+    CHECK(g.exit_code == 1);
+    REQUIRE(g.results.is_object());
+    CHECK(check_report_images(g.results, out, "pipeline") > 0);
 }
 
 TEST_CASE("course grade --jobs 2 gives the same results as --jobs 1") {
