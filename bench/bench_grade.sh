@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Wall time of `course grade` (median of RUNS runs), with the goals beside it:
-#   all labs, warm shader cache, --jobs 2       <= 1.2 s
+#   all labs, warm shader cache, --jobs 2       <= 0.6 s
 #   all labs, warm, --jobs 1                    <= 2.2 s
+#   all labs, warm, --jobs = cores (16 cores)   <= 0.3 s
 #   each lab alone, warm, --jobs 1              <= 0.35 s
+#   each lab after lab 6, alone / the slowest of labs 0-6   <= 1.0
 #   jobs 1 / jobs 2 (warm)                      >= 1.8
 #   grading (warm, --jobs 1) / the floor        <= 1.5
 #   with / without namespaces and cgroups       <= 1.05 (root only)
@@ -45,6 +47,7 @@ row() {
     printf "%-44s %8s   goal %s %-6s %s\n", n, v, op, g, met ? "met" : "NOT met" }'
 }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
+max() { awk -v a="$1" -v b="$2" 'BEGIN {print (b > a) ? b : a}'; }
 
 wrap=()  # a command put before course (a sandbox profile's)
 labs=$("$bin/lab" list | awk '{print $2}')
@@ -80,19 +83,30 @@ draw=$("$bin/bench_draw" | awk '$1 == "draw" && $2 == "only" {print $7}')
 printf '%-44s %8s %8s %8s\n' "all labs (seconds)" "cold" "seeded" "warm"
 printf '%-44s %8s %8s %8s\n' "  --jobs 1" "$cold1" "$seed1" "$warm1"
 printf '%-44s %8s %8s %8s\n' "  --jobs 2" "$cold2" "$seed2" "$warm2"
+cores=$(nproc)
+[ "$cores" -gt 2 ] && warmn=$(median_seconds --jobs "$cores" "$@") &&
+  printf '%-44s %8s %8s %8s\n' "  --jobs $cores" "" "" "$warmn"
 echo "per lab, --jobs 1 (seconds):"
-worst=0
+worst=0 worst_first=0 worst_later=0 n=0
 for lab in $labs; do
   c=$(cold median_seconds "$lab" --jobs 1 "$@")
   w=$(median_seconds "$lab" --jobs 1 "$@")
   printf '  %-42s %8s %8s\n' "$lab" "$c" "$w"
-  worst=$(awk -v a="$worst" -v b="$w" 'BEGIN {print (b > a) ? b : a}')
+  worst=$(max "$worst" "$w")
+  # Labs 0-6 (the first seven `lab list` prints) set the bar for the later ones.
+  if [ $((n++)) -lt 7 ]; then worst_first=$(max "$worst_first" "$w"); else worst_later=$(max "$worst_later" "$w"); fi
 done
 echo
 echo "figures against the goals (warm shader cache):"
-row "all labs, --jobs 2 (s)" "$warm2" "<=" 1.2
+row "all labs, --jobs 2 (s)" "$warm2" "<=" 0.6
 row "all labs, --jobs 1 (s)" "$warm1" "<=" 2.2
+if [ "$cores" -ge 16 ]; then
+  row "all labs, --jobs $cores (s)" "$warmn" "<=" 0.3
+else
+  echo "all labs on 16 cores: not measured ($cores cores here; goal <= 0.3 s)"
+fi
 row "slowest lab alone, --jobs 1 (s)" "$worst" "<=" 0.35
+[ "$n" -gt 7 ] && row "slowest after lab 6 / slowest of 0-6" "$(ratio "$worst_later" "$worst_first")" "<=" 1.0
 row "jobs 1 / jobs 2" "$(ratio "$warm1" "$warm2")" ">=" 1.8
 row "grading (--jobs 1) / floor ($floor s)" "$(ratio "$warm1" "$floor")" "<=" 1.5
 row "wrapper per-draw / raw GL (bench_draw)" "${draw:-?}" "<=" 1.02
