@@ -182,6 +182,7 @@ struct Staged {
 inline Staged stage_for_run_as() {
     char name[] = "/tmp/course-run-as-XXXXXX";
     REQUIRE(mkdtemp(name) != nullptr);
+    fw::test::remove_when_passed(name);
     Staged s{name, std::string(name) + "/lab", std::string(name) + "/fake_lab", ""};
     chmod(name, 0755);
     fs::copy_file(fw::test::bin_dir() + "/lab", s.lab);

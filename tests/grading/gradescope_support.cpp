@@ -71,6 +71,7 @@ std::string set_up(Autograder& ag) {
     ag.dir = fs::path("/tmp") /
              ("course-gradescope-" + std::to_string(std::hash<std::string>{}(fw::test::bin_dir())));
     fs::create_directories(ag.dir);
+    fw::test::remove_when_passed(ag.dir.string());
     fs::permissions(ag.dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                                 fs::perms::others_read | fs::perms::others_exec);
     ag.root = ag.dir / "root";

@@ -61,6 +61,7 @@ std::string set_up(Grader& g) {
         ("course-prairielearn-" + std::to_string(std::hash<std::string>{}(fw::test::bin_dir())));
     fs::remove_all(dir);
     fs::create_directories(dir);
+    fw::test::remove_when_passed(dir.string());
     fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                              fs::perms::others_read | fs::perms::others_exec);
     g.out = dir / "out";

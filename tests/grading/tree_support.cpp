@@ -2,6 +2,7 @@
 #include "tests/grading/tree_support.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <thread>
 
@@ -32,13 +33,18 @@ std::string jobs() { return std::to_string(std::max(1u, std::thread::hardware_co
 
 void build_tree(const fs::path& source, const std::string& targets) {
     const std::string build = (source / "build").string();
-    // The suite's own build type (LAB_TEST_BUILD_TYPE), so that a copy's
+    // The suite's own build type and its flags (LAB_TEST_*), so that a copy's
     // objects are the ones the suite's build put in the cache wherever the
     // sources are the same (the ci preset's flags, warnings as errors); the
     // copy's CMakeLists.txt compiles through ccache itself (LAB_CCACHE).
-    const std::string configure = "cmake -S " + shell_quote(source.string()) + " -B " +
-                                  shell_quote(build) +
-                                  " -DCMAKE_BUILD_TYPE=" + LAB_TEST_BUILD_TYPE + " -DLAB_WERROR=ON";
+    std::string type = LAB_TEST_BUILD_TYPE;
+    for (char& c : type) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const std::string configure =
+        "cmake -S " + shell_quote(source.string()) + " -B " + shell_quote(build) +
+        " -DCMAKE_BUILD_TYPE=" + LAB_TEST_BUILD_TYPE + " -DLAB_WERROR=ON" +
+        (type.empty() ? ""
+                      : " -DCMAKE_C_FLAGS_" + type + "=" + shell_quote(LAB_TEST_C_FLAGS) +
+                            " -DCMAKE_CXX_FLAGS_" + type + "=" + shell_quote(LAB_TEST_CXX_FLAGS));
     REQUIRE_MESSAGE(run(configure).exit_code == 0, "configuring " << source);
     REQUIRE_MESSAGE(rebuild_tree(source, targets), "building " << targets << " in " << source);
 }

@@ -203,6 +203,7 @@ struct LabTally {
 
 TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
     const fs::path source = fw::test::source_dir(), dir = fw::test::out_dir();
+    fw::test::remove_when_passed(dir.string());
     const std::string course = fw::test::bin_dir() + "/course", lab = fw::test::bin_dir() + "/lab";
     const bool skip_named = env_is("MISTAKES_SKIP_NAMED", "1");
     const bool record = env_is("MISTAKES_RECORD", "1");

@@ -1,6 +1,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -8,7 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
+#include "framework/text.hpp"
 #include "test_support.hpp"
 
 namespace fw::test {
@@ -28,6 +31,50 @@ std::string out_dir() {
     dir /= name;
     std::filesystem::create_directories(dir);
     return dir.string();
+}
+
+namespace {
+std::vector<std::string>& marked() {
+    static std::vector<std::string> paths;
+    return paths;
+}
+
+std::uintmax_t bytes_under(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(path, ec)) {
+        const std::uintmax_t size = std::filesystem::file_size(path, ec);
+        return ec ? 0 : size;
+    }
+    std::uintmax_t sum = 0;
+    for (auto it = std::filesystem::recursive_directory_iterator(
+             path, std::filesystem::directory_options::skip_permission_denied, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_regular_file(ec) && !it->is_symlink(ec)) sum += it->file_size(ec);
+    return sum;
+}
+}  // namespace
+
+void remove_when_passed(const std::string& path) {
+    if (std::find(marked().begin(), marked().end(), path) == marked().end())
+        marked().push_back(path);
+}
+
+void remove_marked(bool passed) {
+    const char* keep = std::getenv("LAB_KEEP_TEST_OUT");
+    if (marked().empty()) return;
+    if (!passed || (keep && std::string(keep) == "1")) {
+        std::printf("kept for a look: %s\n", join(marked(), ", ").c_str());
+        return;
+    }
+    std::uintmax_t freed = 0;
+    for (const std::string& path : marked()) {
+        freed += bytes_under(path);
+        std::error_code ec;
+        std::filesystem::remove_all(path, ec);
+        if (ec) std::printf("could not remove %s: %s\n", path.c_str(), ec.message().c_str());
+    }
+    std::printf("removed after passing: %s (%.0f MB)\n", join(marked(), ", ").c_str(),
+                static_cast<double>(freed) / 1e6);
 }
 
 bool probe_rgb(const Image& img, int x, int y, glm::vec3 expected, float tol) {

@@ -55,5 +55,6 @@ int main(int argc, char** argv) {
     ctx.applyCommandLine(argc, argv);
     int rc = ctx.run();
     g_context.reset();
+    fw::test::remove_marked(rc == 0);
     return rc;
 }

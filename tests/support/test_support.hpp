@@ -36,6 +36,14 @@ void skip_part_without(const std::string& backend, const std::string& what, cons
 // Directory for files a test writes, created: build/test-out/<test name>/,
 // or build/test-out/<backend>/<test name>/ when $LAB_BACKEND names one.
 std::string out_dir();
+// Marks `path` (a file or a folder) for removal when this test executable
+// ends with every test case passed: a passing suite leaves no copied trees,
+// builds or staged folders behind; a failing one keeps them for a look.
+// LAB_KEEP_TEST_OUT=1 keeps them either way. main() does the removing.
+void remove_when_passed(const std::string& path);
+// main()'s part: removes what remove_when_passed marked when `passed`, and
+// says on stdout how much it freed.
+void remove_marked(bool passed);
 // The build's bin directory (where `lab` lives) and the source tree.
 std::string bin_dir();
 std::string source_dir();

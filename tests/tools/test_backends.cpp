@@ -32,6 +32,7 @@ bool render_all(const std::string& backend, const std::string& dir, std::string&
 
 TEST_CASE("osmesa and egl agree on every checkpoint") {
     std::string out = fw::test::out_dir();
+    fw::test::remove_when_passed(out);
     std::string why;
     // Without OSMesa there is nothing to compare: this whole test is that
     // backend's own case. EGL alone is covered by every other test.

@@ -82,6 +82,7 @@ void copy_lab(const fs::path& tree) {
 TEST_CASE("new lab: a copy of lab 0 as labs/90_warmup lists, renders, grades, releases, tests") {
     const fs::path out = fw::test::out_dir();
     const fs::path tree = out / "tree";
+    fw::test::remove_when_passed(out.string());
     copy_repository(tree);
     copy_lab(tree);
     // Only the two new folders: no other file names the lab.
