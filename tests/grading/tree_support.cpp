@@ -2,7 +2,6 @@
 #include "tests/grading/tree_support.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <thread>
 
@@ -37,8 +36,7 @@ void build_tree(const fs::path& source, const std::string& targets) {
     // objects are the ones the suite's build put in the cache wherever the
     // sources are the same (the ci preset's flags, warnings as errors); the
     // copy's CMakeLists.txt compiles through ccache itself (LAB_CCACHE).
-    std::string type = LAB_TEST_BUILD_TYPE;
-    for (char& c : type) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const std::string type = LAB_TEST_FLAGS_SUFFIX;  // RELWITHDEBINFO for RelWithDebInfo
     const std::string configure =
         "cmake -S " + shell_quote(source.string()) + " -B " + shell_quote(build) +
         " -DCMAKE_BUILD_TYPE=" + LAB_TEST_BUILD_TYPE + " -DLAB_WERROR=ON" +
