@@ -6,6 +6,9 @@
 # the solution:
 #   one lab   the solution, with lab 0's C++ files changed (a comment added)
 #   all labs  the solution, with every lab's C++ files changed
+#   lab 0     an assignment of lab 0 alone (`course gradescope --out DIR
+#             pipeline`: its run_autograder and file list put in place), its
+#             files submitted with their C++ changed
 # each three times: on one core (taskset -c 0); in a cgroup with a CPU quota
 # of half a core and a 768 MB memory limit, where root can make one (cgroup v1
 # cpu and memory controllers, or v2); and there again without the shader
@@ -49,13 +52,14 @@ mapfile -t files < <(grep -v '^$' "$ag/source/student_files.txt")
 declare -A solution
 for rel in "${files[@]}"; do solution[$rel]=$(cat "$ag/source/$rel"; printf x); done
 
-# The submission: every student file flat, as the solution has it, those
-# whose path matches $1 with a comment added.
+# The submission: every student file of the autograder's list flat, as the
+# solution has it, those whose path matches $1 with a comment added.
 submission() {
   rm -rf "$ag/submission"
   mkdir -p "$ag/submission"
-  local rel text
-  for rel in "${files[@]}"; do
+  local rel text listed
+  mapfile -t listed < <(grep -v '^$' "$ag/source/student_files.txt")
+  for rel in "${listed[@]}"; do
     text=${solution[$rel]%x}
     if [[ $rel == *.cpp && $rel =~ $1 ]]; then text+="// changed $(date +%s%N)"$'\n'; fi
     printf '%s' "$text" >"$ag/submission/$(basename "$rel")"
@@ -118,9 +122,15 @@ run() {
 
 printf '%-9s %-20s %6s %6s %6s %7s  %-22s %s\n' submission machine copy build grade total \
   "peak memory (cgroup)" score
-for scenario in "one lab:labs/00_" "all labs:labs/"; do
+for scenario in "one lab:labs/00_" "all labs:labs/" "lab 0:labs/00_"; do
   label=${scenario%%:*}
   pattern=${scenario#*:}
+  if [ "$label" = "lab 0" ]; then
+    # The same image as the autograder of an assignment of lab 0 alone.
+    "$course" gradescope --out "$work/lab0" pipeline >/dev/null
+    cp "$work/lab0/run_autograder" "$ag/run_autograder"
+    cp "$work/lab0/student_files.txt" "$ag/source/student_files.txt"
+  fi
   for machine in "1 core" "half a core, 768 MB" "half, no warm cache"; do
     submission '^$'  # the solution: the tree holds it again (not measured)
     AUTOGRADER_ROOT="$ag" bash "$ag/run_autograder" >/dev/null 2>&1

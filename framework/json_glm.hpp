@@ -20,6 +20,11 @@ namespace fw {
 template <class T, class = void>
 struct JsonValue;
 
+// Throws Error("WHAT, got JSON"), `got` as compact JSON text. Out of line:
+// writing JSON text (nlohmann's dump) is a large template, which every file
+// that converts a value would otherwise compile again.
+[[noreturn]] void throw_mismatch(const std::string& what, const nlohmann::json& got);
+
 // JSON has no NaN or infinity (nlohmann writes them as null), so a number
 // that is not finite travels as one of the strings "NaN", "Infinity",
 // "-Infinity": a report can then say which it was.
@@ -29,45 +34,26 @@ inline const char* non_finite_name(double v) {
 
 // A number as it travels: a JSON number, or one of the strings above;
 // nullopt for anything else.
-inline std::optional<double> json_number(const nlohmann::json& j) {
-    if (j.is_number()) return j.get<double>();
-    if (!j.is_string()) return std::nullopt;
-    const std::string& s = j.get_ref<const std::string&>();
-    if (s == "NaN") return std::numeric_limits<double>::quiet_NaN();
-    if (s == "Infinity") return std::numeric_limits<double>::infinity();
-    if (s == "-Infinity") return -std::numeric_limits<double>::infinity();
-    return std::nullopt;
-}
+std::optional<double> json_number(const nlohmann::json& j);
 
+// The scalars, out of line (json_glm.cpp) like throw_mismatch: a lab's file
+// then compiles none of nlohmann's conversions and exceptions for them.
 template <>
 struct JsonValue<float> {
-    static nlohmann::json to(float v) {
-        if (!std::isfinite(v)) return non_finite_name(v);
-        return v;
-    }
-    static float from(const nlohmann::json& j) {
-        const std::optional<double> v = json_number(j);
-        if (!v) throw Error("expected a number, got " + j.dump());
-        return static_cast<float>(*v);
-    }
+    static nlohmann::json to(float v);
+    static float from(const nlohmann::json& j);
 };
 
 template <>
 struct JsonValue<int> {
-    static nlohmann::json to(int v) { return v; }
-    static int from(const nlohmann::json& j) {
-        if (!j.is_number_integer()) throw Error("expected an integer, got " + j.dump());
-        return j.get<int>();
-    }
+    static nlohmann::json to(int v);
+    static int from(const nlohmann::json& j);
 };
 
 template <>
 struct JsonValue<bool> {
-    static nlohmann::json to(bool v) { return v; }
-    static bool from(const nlohmann::json& j) {
-        if (!j.is_boolean()) throw Error("expected true or false, got " + j.dump());
-        return j.get<bool>();
-    }
+    static nlohmann::json to(bool v);
+    static bool from(const nlohmann::json& j);
 };
 
 template <glm::length_t N>
@@ -79,7 +65,7 @@ struct JsonValue<glm::vec<N, float>> {
     }
     static glm::vec<N, float> from(const nlohmann::json& j) {
         if (!j.is_array() || j.size() != static_cast<size_t>(N))
-            throw Error("expected an array of " + std::to_string(N) + " numbers, got " + j.dump());
+            throw_mismatch("expected an array of " + std::to_string(N) + " numbers", j);
         glm::vec<N, float> v;
         for (glm::length_t i = 0; i < N; ++i)
             v[i] = JsonValue<float>::from(j[static_cast<size_t>(i)]);
@@ -97,7 +83,7 @@ struct JsonValue<glm::mat<C, R, float>> {
     }
     static glm::mat<C, R, float> from(const nlohmann::json& j) {
         if (!j.is_array() || j.size() != static_cast<size_t>(C))
-            throw Error("expected " + std::to_string(C) + " columns, got " + j.dump());
+            throw_mismatch("expected " + std::to_string(C) + " columns", j);
         glm::mat<C, R, float> m;
         for (glm::length_t c = 0; c < C; ++c)
             m[c] = JsonValue<glm::vec<R, float>>::from(j[static_cast<size_t>(c)]);

@@ -39,7 +39,7 @@ struct JsonValue<std::vector<T>> {
         return out;
     }
     static std::vector<T> from(const nlohmann::json& j) {
-        if (!j.is_array()) throw Error("expected an array, got " + j.dump());
+        if (!j.is_array()) throw_mismatch("expected an array", j);
         std::vector<T> out;
         for (const auto& e : j) out.push_back(JsonValue<T>::from(e));
         return out;
@@ -54,7 +54,7 @@ struct JsonValue<E, std::enable_if_t<std::is_enum_v<E> && HasChoices<E>::value>>
         if (j.is_string())
             for (const Choice<E>& c : ChoicesOf<E>::list)
                 if (j.get<std::string>() == c.name) return c.value;
-        throw Error("expected one of " + choice_names<E>() + ", got " + j.dump());
+        throw_mismatch("expected one of " + choice_names<E>(), j);
     }
 };
 
@@ -73,7 +73,7 @@ struct JsonValue<T, std::enable_if_t<HasFields<T>::value>> {
     static T from(const nlohmann::json& j) {
         constexpr size_t n = std::size(FieldsOf<T>::list);
         if (!j.is_array() || j.size() != n)
-            throw Error("expected a list of " + std::to_string(n) + " values, got " + j.dump());
+            throw_mismatch("expected a list of " + std::to_string(n) + " values", j);
         T v{};
         size_t i = 0;
         for (const auto& f : FieldsOf<T>::list) v.*f.member = JsonValue<FieldType>::from(j[i++]);
@@ -103,8 +103,9 @@ UnitFunction unit_function(std::string name, R (*f)(A...)) {
     u.arity = static_cast<int>(sizeof...(A));
     u.call = [f, name](const nlohmann::json& args) {
         if (!args.is_array() || args.size() != sizeof...(A))
-            throw Error("unit function '" + name + "' takes " + std::to_string(sizeof...(A)) +
-                        " arguments, got " + args.dump());
+            throw_mismatch(
+                "unit function '" + name + "' takes " + std::to_string(sizeof...(A)) + " arguments",
+                args);
         return detail::call_with_json(f, args, std::index_sequence_for<A...>{});
     };
     return u;

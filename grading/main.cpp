@@ -120,11 +120,17 @@ Command add_release(CLI::App& app, std::string& out) {
     return {release, [&out] { return grading::release_command(out); }};
 }
 
-Command add_gradescope(CLI::App& app, std::string& out, grading::HiddenAs& hidden_as) {
+Command add_gradescope(CLI::App& app, std::string& out, grading::HiddenAs& hidden_as,
+                       std::vector<std::string>& labs) {
     auto* gradescope = app.add_subcommand("gradescope", "Write a Gradescope autograder folder");
     gradescope->add_option("--out", out, "Directory to write")->required();
     add_choice(gradescope, "--hidden-as", hidden_as, kHiddenAs, kHiddenAsHelp);
-    return {gradescope, [&out, &hidden_as] { return grading::gradescope_command(out, hidden_as); }};
+    gradescope->add_option("LAB", labs,
+                           "An assignment of these labs only: graded, and their files taken from "
+                           "a submission (default: every lab)");
+    return {gradescope, [&out, &hidden_as, &labs] {
+                return grading::gradescope_command(out, hidden_as, labs);
+            }};
 }
 
 Command add_prairielearn(CLI::App& app, std::string& out) {
@@ -174,13 +180,14 @@ int main(int argc, char** argv) {
     std::string release_out, gradescope_out, prairielearn_out;
     grading::AutogradeOptions autograde;
     grading::HiddenAs gradescope_hidden_as = grading::HiddenAs::AfterDueDate;
+    std::vector<std::string> gradescope_labs;
     const std::vector<Command> commands = {
         add_grade(app, grade),
         add_bless(app, bless),
         add_warm_cache(app, warm),
         add_cases(app, cases),
         add_release(app, release_out),
-        add_gradescope(app, gradescope_out, gradescope_hidden_as),
+        add_gradescope(app, gradescope_out, gradescope_hidden_as, gradescope_labs),
         add_prairielearn(app, prairielearn_out),
         add_autograde(app, autograde)};
 

@@ -17,8 +17,12 @@ namespace grading {
 // platform takes (gradescope/gradescope_folder.cpp,
 // prairielearn/prairielearn_folder.cpp).
 // `hidden_as` goes into run_autograder: how Gradescope shows the tests of
-// hidden checkpoints (reports.hpp, HiddenAs).
-int gradescope_command(const std::string& out_dir, HiddenAs hidden_as = HiddenAs::AfterDueDate);
+// hidden checkpoints (reports.hpp, HiddenAs); `labs` (names, empty: all)
+// makes the folder an assignment of those labs only: run_autograder grades
+// them, and takes only their files from a submission. An unknown lab, or one
+// without a student part, is a fw::UsageError.
+int gradescope_command(const std::string& out_dir, HiddenAs hidden_as = HiddenAs::AfterDueDate,
+                       const std::vector<std::string>& labs = {});
 int prairielearn_command(const std::string& out_dir);
 
 // The files students edit (those with solution blocks, staff files such as

@@ -115,8 +115,7 @@ public:
 
         checker_ = texture_of(sphere_checker(), "sphere checker");
         // The one texture read from a file, next to the lab's shaders.
-        image_ = texture_of(load_image(fw::shader_path(std::string(FW_LAB_DIR) + "/grid.png")),
-                            "grid.png");
+        image_ = texture_of(load_image(fw::shader_path(FW_LAB_DIR "/grid.png")), "grid.png");
         floor_texture_ = texture_of(floor_checker(), "floor checker");
         ramp_ = texture_of(ramp(), "ramp");
         // Storage for the whole chain, 256 x 256 down to 1 x 1, and the

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -164,4 +165,76 @@ TEST_CASE("gradescope: when course grade itself fails, results.json still lists 
     CHECK(run.results.value("score", -1.0) == 0.0);
     fw::test::check_mentions(run.results.value("output", ""),
                              {"course grade failed (exit status 2)", "--timeout"});
+}
+
+TEST_CASE("gradescope: an assignment of one lab grades it from its own files only") {
+    Autograder& ag = autograder();
+    const Run& all = solution_run(ag);
+    const std::string course = shell_quote(fw::test::bin_dir() + "/course");
+    const fs::path dir = fs::path(fw::test::out_dir()) / "assignment";
+    fs::remove_all(dir);
+    const std::string victim = ag.expected.victim, folder = ag.expected.victim_dir;
+    // A lab that does not exist is refused, naming the labs; nothing is written.
+    const auto unknown = fw::test::run_command(course + " gradescope --out " +
+                                               shell_quote(dir.string()) + " no-such-lab");
+    CHECK(unknown.exit_code == 2);
+    fw::test::check_mentions(unknown.output, {"unknown lab 'no-such-lab'", victim});
+    CHECK(!fs::exists(dir));
+    const auto written = fw::test::run_command("env -u LAB_ROOT " + course + " gradescope --out " +
+                                               shell_quote(dir.string()) + " " + victim);
+    REQUIRE_MESSAGE(written.exit_code == 0, written.output);
+    fw::test::check_mentions(written.output, {"graded: " + victim + " only"});
+    const std::string script = read_text(dir / "run_autograder");
+    fw::test::check_mentions(script, {"\nlabs=\"" + victim + "\"\n", "\"$hidden_as\" $labs"});
+    // Only the lab's own files are taken from a submission.
+    std::vector<std::string> own;
+    std::istringstream lines(read_text(dir / "student_files.txt"));
+    for (std::string line; std::getline(lines, line);)
+        if (!line.empty()) own.push_back(line);
+    REQUIRE(!own.empty());
+    for (const std::string& rel : own) {
+        INFO(rel);
+        CHECK((rel.rfind("labs/" + folder + "/", 0) == 0 ||
+               rel.rfind("shaders/" + folder + "/", 0) == 0));
+    }
+    size_t of_victim = 0;
+    for (const std::string& rel : ag.student_files)
+        of_victim += rel.find("/" + folder + "/") != std::string::npos;
+    CHECK(own.size() == of_victim);
+
+    // The set-up autograder as the assignment: its run_autograder and file list.
+    const std::string list = (ag.root / "source" / "student_files.txt").string(),
+                      runner = (ag.root / "run_autograder").string();
+    const std::string full_list = read_text(list), full_runner = read_text(runner);
+    fw::test::write_text(runner, script);
+    fw::test::write_text(list, read_text(dir / "student_files.txt"));
+    fs::remove_all(dir);
+    // The solution of the lab, and a file of another lab that does not compile:
+    // the assignment never takes it, so the build and the grade stand.
+    std::map<std::string, std::string> files;
+    std::string other;
+    for (const auto& [rel, text] : ag.solution_text)
+        if (rel.find("/" + folder + "/") != std::string::npos)
+            files[fs::path(rel).filename().string()] = text;
+        else if (other.empty() && rel.ends_with(".cpp"))
+            other = rel;
+    REQUIRE(!other.empty());
+    files[other] = "#error this file is not part of the assignment\n";
+    const Run run = submit(ag, "an assignment of " + victim, files);
+    fw::test::write_text(runner, full_runner);
+    fw::test::write_text(list, full_list);
+    REQUIRE(run.results.is_object());
+    std::map<std::string, double> want, got;
+    for (const json& t : all.results["tests"])
+        if (lab_of(t) == victim) want[t["name"]] = t.value("score", -1.0);
+    for (const json& t : run.results["tests"]) got[t["name"]] = t.value("score", -1.0);
+    REQUIRE(!want.empty());
+    CHECK(got == want);
+    double points = 0;
+    for (const auto& [name, score] : want) points += score;
+    CHECK(run.results.value("score", -1.0) == doctest::Approx(points));
+    CHECK(run.lab_seconds.size() == 1);
+    CHECK(run.lab_seconds.count(victim) == 1);
+    MESSAGE("an assignment of " << victim << ": " << run.seconds << " s, " << got.size()
+                                << " tests, " << points << " points");
 }

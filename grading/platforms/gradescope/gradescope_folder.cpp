@@ -6,9 +6,11 @@
 //   Gradescope runs setup.sh once, as root, to build its image, and
 //   run_autograder (which runs `course autograde`) for each submission;
 //   run_autograder's `hidden_as=` line holds `--hidden-as`, how Gradescope
-//   shows the tests of hidden checkpoints;
-// - student_files.txt: the files students edit (those with solution blocks),
-//   and student_versions/<file>: their student versions (`course release`),
+//   shows the tests of hidden checkpoints, and its `labs=` line the labs the
+//   assignment grades (empty: all);
+// - student_files.txt: the files students edit (those with solution blocks;
+//   for an assignment of some labs, only those labs' files), and
+//   student_versions/<file>: their student versions (`course release`),
 //   which `course autograde` grades in place of a file a submission lacks,
 //   so that a solution is never graded as a student's work.
 #include <sys/stat.h>
@@ -20,6 +22,8 @@
 #include <vector>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
+#include "grading/judge/checks.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"
@@ -35,17 +39,15 @@ constexpr const char* kTemplates = "grading/platforms/gradescope";
 constexpr const char* kScripts[] = {"setup.sh", "run_autograder"};
 constexpr const char* kStudentFiles = "student_files.txt";
 constexpr const char* kStudentVersions = "student_versions";
-// run_autograder's line that says how hidden checkpoints' tests are shown.
-constexpr const char* kHiddenAsLine = "\nhidden_as=after_due_date\n";
 
-// run_autograder's text, with `hidden_as` in its hidden_as= line.
-std::string with_hidden_as(std::string text, const fs::path& from, HiddenAs hidden_as) {
-    const size_t at = text.find(kHiddenAsLine);
+// run_autograder's `line` ("hidden_as=after_due_date", "labs=") as `value`.
+std::string with_line(std::string text, const fs::path& from, const std::string& line,
+                      const std::string& value, const char* option) {
+    const size_t at = text.find("\n" + line + "\n");
     if (at == std::string::npos)
-        throw fw::Error("'" + from.string() + "' has no line 'hidden_as=after_due_date', where " +
-                        "course gradescope writes --hidden-as");
-    return text.replace(at + 1, std::string(kHiddenAsLine).size() - 2,
-                        std::string("hidden_as=") + name_of(hidden_as));
+        throw fw::Error("'" + from.string() + "' has no line '" + line +
+                        "', where course gradescope writes " + option);
+    return text.replace(at + 1, line.size(), value);
 }
 
 // What the folder will hold, read and checked before anything is written.
@@ -53,15 +55,47 @@ struct FolderPlan {
     std::vector<std::string> files;  // of the repository
     StudentFiles students;
     std::vector<std::string> missing;  // tracked, not in the tree
+    std::vector<std::string> labs;     // the assignment's, by name (empty: all)
 };
 
-FolderPlan plan_folder(const fs::path& source) {
+// Whether `rel` is a file of `lab`: under labs/DIR/ or shaders/DIR/.
+bool of_lab(const std::string& rel, const LabData& lab) {
+    for (const char* top : {"labs/", "shaders/"})
+        if (rel.rfind(top + lab.dir + "/", 0) == 0) return true;
+    return false;
+}
+
+// The student files of an assignment of `labs` only: the others stay as the
+// folder has them, so that no file of another lab can break the build.
+StudentFiles assignment_files(const StudentFiles& all, const std::vector<LabData>& labs) {
+    StudentFiles kept;
+    for (const auto& file : all)
+        for (const LabData& lab : labs)
+            if (of_lab(file.first, lab)) {
+                kept.push_back(file);
+                break;
+            }
+    return kept;
+}
+
+FolderPlan plan_folder(const fs::path& source, const std::vector<std::string>& labs) {
     for (const char* script : kScripts) require_template(source, kTemplates, script);
     FolderPlan plan;
     plan.files = project_files(source.string());
     for (const std::string& rel : plan.files)
         if (!fs::exists(fs::symlink_status(source / rel))) plan.missing.push_back(rel);
     plan.students = student_files(source, plan.files);
+    if (labs.empty()) return plan;
+    const std::vector<LabData> chosen = select_labs(discover_labs(source.string()), labs);
+    for (const LabData& lab : chosen) {
+        if (assignment_files(plan.students, {lab}).empty())
+            throw fw::UsageError("lab '" + lab.id +
+                                 "' has no file with a solution block (under labs/" + lab.dir +
+                                 "/ or shaders/" + lab.dir +
+                                 "/), so an assignment of it would grade nothing a student wrote");
+        plan.labs.push_back(lab.id);
+    }
+    plan.students = assignment_files(plan.students, chosen);
     return plan;
 }
 
@@ -81,7 +115,13 @@ size_t write_folder(const FolderPlan& plan, const fs::path& source, const fs::pa
     for (const char* script : kScripts) {
         const fs::path from = source / kTemplates / script;
         std::string text = read_file(from);
-        if (std::string(script) == "run_autograder") text = with_hidden_as(text, from, hidden_as);
+        if (std::string(script) == "run_autograder") {
+            text = with_line(text, from, "hidden_as=after_due_date",
+                             std::string("hidden_as=") + name_of(hidden_as), "--hidden-as");
+            if (!plan.labs.empty())
+                text = with_line(text, from, "labs=", "labs=\"" + fw::join(plan.labs, " ") + "\"",
+                                 "the labs of an assignment");
+        }
         write_file(dest / script, text, kExecutable);
     }
     write_student_files(plan.students, dest);
@@ -97,6 +137,13 @@ void print_folder(const FolderPlan& plan, const fs::path& source, size_t copied,
         std::printf("  %-48s from %s/%s\n", script, kTemplates, script);
     std::printf("  hidden checkpoints' tests shown on Gradescope: %s (--hidden-as)\n",
                 name_of(hidden_as));
+    if (plan.labs.empty())
+        std::printf("  graded: every lab (name labs after --out for an assignment of some)\n");
+    else
+        std::printf(
+            "  graded: %s only (the assignment's labs; the other labs' files are not "
+            "taken from a submission)\n",
+            fw::join(plan.labs, ", ").c_str());
     std::printf("  %-48s %zu files students edit:\n", kStudentFiles, plan.students.size());
     for (const auto& [rel, text] : plan.students)
         std::printf("    %s (student version in %s/)\n", rel.c_str(), kStudentVersions);
@@ -151,10 +198,11 @@ void write_student_files(const StudentFiles& students, const fs::path& dest) {
     write_file(dest / kStudentFiles, list, kReadable);
 }
 
-int gradescope_command(const std::string& out_dir, HiddenAs hidden_as) {
+int gradescope_command(const std::string& out_dir, HiddenAs hidden_as,
+                       const std::vector<std::string>& labs) {
     const fs::path source(source_root()), dest(out_dir);
     require_new_output_dir(dest);
-    const FolderPlan plan = plan_folder(source);
+    const FolderPlan plan = plan_folder(source, labs);
     const size_t copied = write_folder(plan, source, dest, hidden_as);
     print_folder(plan, source, copied, out_dir, hidden_as);
     return 0;
