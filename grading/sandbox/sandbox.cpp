@@ -77,6 +77,7 @@ std::set<pid_t> g_labs;
 struct ProcInfo {
     pid_t pid = 0, ppid = 0;
     uid_t uid = 0;
+    bool zombie = false;  // exited, not yet reaped: nothing left to kill
 };
 
 std::vector<ProcInfo> processes() {
@@ -92,6 +93,11 @@ std::vector<ProcInfo> processes() {
         p.pid = static_cast<pid_t>(pid);
         bool have_uid = false;
         for (std::string line; std::getline(status, line);) {
+            if (line.rfind("State:", 0) == 0) {
+                // "State:\tZ (zombie)"; X: dead, about to go.
+                const size_t at = line.find_first_not_of(" \t", 6);
+                p.zombie = at != std::string::npos && (line[at] == 'Z' || line[at] == 'X');
+            }
             if (line.rfind("PPid:", 0) == 0) p.ppid = static_cast<pid_t>(std::stol(line.substr(5)));
             if (line.rfind("Uid:", 0) == 0) {
                 std::istringstream fields(line.substr(4));
@@ -201,6 +207,14 @@ int kill_strays(const RunAsUser* user) {
                 return false;
             };
             for (const ProcInfo& p : all) {
+                // A zombie has ended already: course reaps its own, and one
+                // whose parent never reaps it (a container's init may not)
+                // must not count as a stray round after round (kill() on a
+                // zombie succeeds).
+                if (p.zombie) {
+                    if (p.ppid == self && !g_labs.count(p.pid)) waitpid(p.pid, nullptr, WNOHANG);
+                    continue;
+                }
                 if (p.pid == self || in_running_lab(p.pid)) continue;
                 const bool adopted = p.ppid == self;
                 const bool users = user && p.uid == user->uid;

@@ -2,10 +2,13 @@
 // `course grade --jobs 2`: after each child, run_child() kills whatever no
 // running lab started; a child that another thread is starting at that
 // moment is a running lab, never a stray. Real processes, no GL.
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <string>
@@ -80,4 +83,112 @@ TEST_CASE("children: what a child leaves running is still killed when it ends") 
     MESSAGE(run.log);
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));
     CHECK(access(mark.c_str(), F_OK) != 0);
+}
+
+namespace {
+
+// The state letter of /proc/PID/status ('Z': a zombie), '?' when it is gone.
+char process_state(pid_t pid) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("State:", 0) == 0) {
+            const size_t at = line.find_first_not_of(" \t", 6);
+            return at == std::string::npos ? '?' : line[at];
+        }
+    return '?';
+}
+
+// Waits (up to 5 s) until `pid` is in state `state`.
+bool becomes(pid_t pid, char state) {
+    for (int i = 0; i < 500; ++i) {
+        if (process_state(pid) == state) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+}
+
+// A process that ends at once as `uid`, and `parent`, which never reaps it.
+struct Unreaped {
+    pid_t parent = -1, zombie = -1;
+    int release[2] = {-1, -1};
+};
+
+Unreaped unreaped_zombie(uid_t uid) {
+    Unreaped u;
+    int ids[2];
+    REQUIRE(pipe(u.release) == 0);
+    REQUIRE(pipe(ids) == 0);
+    u.parent = fork();
+    REQUIRE(u.parent >= 0);
+    if (u.parent == 0) {
+        close(u.release[1]);
+        const pid_t child = fork();
+        if (child == 0) _exit(setuid(uid) == 0 ? 0 : 1);
+        (void)!write(ids[1], &child, sizeof child);
+        char byte;
+        (void)!read(u.release[0], &byte, 1);  // until the test lets go; no wait()
+        _exit(0);
+    }
+    close(u.release[0]);
+    close(ids[1]);
+    REQUIRE(read(ids[0], &u.zombie, sizeof u.zombie) == sizeof u.zombie);
+    close(ids[0]);
+    becomes(u.zombie, 'Z');
+    return u;
+}
+
+}  // namespace
+
+// In a child of the test (course's part, not a subreaper): a zombie of its own,
+// which it reaps without counting, and a live process of `user`, which it
+// kills. Exits with how many kill_strays() killed, 100 more when its own
+// zombie was not reaped.
+[[noreturn]] void seek_strays(const grading::RunAsUser& user) {
+    const pid_t own = fork();
+    if (own == 0) _exit(0);
+    int ready[2];
+    if (own < 0 || !becomes(own, 'Z') || pipe(ready) != 0) _exit(200);
+    const pid_t live = fork();
+    if (live == 0) {
+        close(ready[0]);
+        if (setuid(user.uid) != 0) _exit(1);
+        close(ready[1]);  // now of the user
+        pause();
+        _exit(1);
+    }
+    close(ready[1]);
+    char byte;
+    if (live < 0 || read(ready[0], &byte, 1) != 0) _exit(201);
+    const int killed = grading::kill_strays(&user);
+    _exit(killed + (process_state(own) == '?' ? 0 : 100));
+}
+
+TEST_CASE("children: a zombie is not a stray: course reaps its own and leaves another's") {
+    if (geteuid() != 0) {
+        std::printf("SKIP: processes of another user need root; this test runs as uid %u\n",
+                    unsigned(geteuid()));
+        return;
+    }
+    // A user of its own, which no other test's process has: kill_strays kills
+    // every process of it.
+    grading::RunAsUser user;
+    user.name = "children-test";
+    user.uid = user.gid = 3999999;
+    // A zombie of the user whose parent never reaps it (as a container's init
+    // may never), outside the tree of the process that seeks strays.
+    Unreaped z = unreaped_zombie(user.uid);
+    REQUIRE(process_state(z.zombie) == 'Z');
+    const pid_t seeker = fork();
+    REQUIRE(seeker >= 0);
+    if (seeker == 0) seek_strays(user);
+    int status = 0;
+    REQUIRE(waitpid(seeker, &status, 0) == seeker);
+    REQUIRE(WIFEXITED(status));
+    // The live process, once: a zombie taken for a stray would count again
+    // every round (kill() succeeds on it), 50 rounds.
+    CHECK(WEXITSTATUS(status) == 1);
+    CHECK(process_state(z.zombie) == 'Z');  // left to its parent
+    close(z.release[1]);
+    waitpid(z.parent, nullptr, 0);
+    waitpid(z.zombie, nullptr, 0);  // reparented to this process (a subreaper) or init
 }
