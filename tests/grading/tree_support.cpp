@@ -32,14 +32,15 @@ std::string jobs() { return std::to_string(std::max(1u, std::thread::hardware_co
 
 void build_tree(const fs::path& source, const std::string& targets) {
     const std::string build = (source / "build").string();
-    // The suite's own build type and its flags (LAB_TEST_*), so that a copy's
-    // objects are the ones the suite's build put in the cache wherever the
-    // sources are the same (the ci preset's flags, warnings as errors); the
-    // copy's CMakeLists.txt compiles through ccache itself (LAB_CCACHE).
+    // The suite's own build type, flags and LAB_WERROR (LAB_TEST_*), so that a
+    // copy's objects are the ones the suite's build put in the cache wherever
+    // the sources are the same (under the ci preset, warnings are errors in
+    // the copies too); the copy's CMakeLists.txt compiles through ccache
+    // itself (LAB_CCACHE).
     const std::string type = LAB_TEST_FLAGS_SUFFIX;  // RELWITHDEBINFO for RelWithDebInfo
     const std::string configure =
         "cmake -S " + shell_quote(source.string()) + " -B " + shell_quote(build) +
-        " -DCMAKE_BUILD_TYPE=" + LAB_TEST_BUILD_TYPE + " -DLAB_WERROR=ON" +
+        " -DCMAKE_BUILD_TYPE=" + LAB_TEST_BUILD_TYPE + " -DLAB_WERROR=" + LAB_TEST_WERROR +
         (type.empty() ? ""
                       : " -DCMAKE_C_FLAGS_" + type + "=" + shell_quote(LAB_TEST_C_FLAGS) +
                             " -DCMAKE_CXX_FLAGS_" + type + "=" + shell_quote(LAB_TEST_CXX_FLAGS));
