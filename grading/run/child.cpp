@@ -366,17 +366,21 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     ChildRun run = std::move(watch.run());
     if (!watch.killed()) run.status = exit_status(watch.wait_status(), start);
     lab_ended(pid);  // watch() has reaped it
+    // Whatever it left running, setsid() or not, dies with its lab. With a
+    // cgroup that is what is left in it (the lab itself is reaped), found and
+    // killed first: then no process of the user outside it (another
+    // program's) is touched, and the search below finds only what course
+    // adopted from outside the cgroup, if anything.
+    int strays = 0;
     if (cgroup) {
-        cgroup->kill_all();
+        strays = cgroup->kill_all();
         if (cgroup->oom_kills() > 0 && !run.ok())
             run.status =
                 LabStatus::failed("killed for memory: more than " + mib_text(limits.resident_cap) +
                                   " in use (its cgroup's limit)");
     }
-    // Whatever it left running, setsid() or not, dies with its lab. With a
-    // cgroup that has been found and killed already: then no process of the
-    // user outside it (another program's) is touched.
-    if (const int strays = kill_strays(cgroup ? nullptr : user))
+    strays += kill_strays(cgroup ? nullptr : user);
+    if (strays > 0)
         run.log += "\ncourse: killed " + std::to_string(strays) +
                    " process(es) the lab left running after it ended\n";
     return run;

@@ -246,7 +246,13 @@ LabCgroup::LabCgroup(const CgroupRoot& root, std::uint64_t memory_cap, int proce
 }
 
 int LabCgroup::kill_all() {
-    int killed = 0;
+    // Counted before the kill: a killed process may already be a zombie, or
+    // reaped, by the time it is looked at again.
+    int left = 0;
+    {
+        std::istringstream procs(read_file(procs_));
+        for (long pid; procs >> pid;) ++left;
+    }
     if (version_ == 2 && fs::exists(dirs_[0] + "/cgroup.kill"))
         write_file(dirs_[0] + "/cgroup.kill", "1");
     // Killed processes leave the cgroup once reaped (their parents are in
@@ -256,13 +262,13 @@ int LabCgroup::kill_all() {
         bool any = false;
         for (long pid; procs >> pid;) {
             any = true;
-            if (kill(static_cast<pid_t>(pid), SIGKILL) == 0) ++killed;
+            kill(static_cast<pid_t>(pid), SIGKILL);
             waitpid(static_cast<pid_t>(pid), nullptr, WNOHANG);
         }
         if (!any) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    return killed;
+    return left;
 }
 
 long LabCgroup::oom_kills() const {

@@ -61,7 +61,7 @@ public:
 
     const std::vector<int>& join_fds() const { return join_fds_; }
     // Kills every process in the cgroup and waits (briefly) until it is
-    // empty. Returns how many it killed.
+    // empty. Returns how many were in it when called.
     int kill_all();
     // How many times the kernel killed a process of it for memory.
     long oom_kills() const;

@@ -70,13 +70,20 @@ TEST_CASE("children: a child started while another thread seeks strays is not on
 
 TEST_CASE("children: what a child leaves running is still killed when it ends") {
     REQUIRE(grading::become_subreaper());
-    // A daemon (setsid, its parent gone): course adopts it and kills it.
-    const std::string mark = fw::test::out_dir() + "/children-daemon";
+    // A daemon (setsid, its parent gone): course adopts it and kills it. The
+    // child ends only once the daemon is one (in a session of its own), since
+    // what is still in the child's process group when it ends dies with it,
+    // uncounted (killpg), and would leave nothing for course to find.
+    const std::string mark = fw::test::out_dir() + "/children-daemon",
+                      ready = fw::test::out_dir() + "/children-daemon-ready";
     std::remove(mark.c_str());
+    std::remove(ready.c_str());
     grading::ChildLimits limits;
     limits.timeout_seconds = 30;
     const grading::ChildRun run = grading::run_child(
-        {"/bin/sh", "-c", "setsid sh -c 'sleep 1; touch " + mark + "' >/dev/null 2>&1 &"},
+        {"/bin/sh", "-c",
+         "setsid sh -c 'touch " + ready + "; sleep 1; touch " + mark +
+             "' >/dev/null 2>&1 & while [ ! -e " + ready + " ]; do sleep 0.01; done"},
         work_dir(), limits, nullptr);
     CHECK(run.ok());
     CHECK(run.log.find("process(es) the lab left running") != std::string::npos);
