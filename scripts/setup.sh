@@ -31,10 +31,26 @@ packages=(
 )
 # What only the tests need (scripts/test.sh sets LAB_SETUP_TESTS=1), so that
 # grading, and the autograders' images, go without it: a browser, for the
-# tests that look at the reports as a student sees them, and a compiler
-# cache, which the tests that build copies of the repository share.
+# tests that look at the reports as a student sees them.
 if [ "${LAB_SETUP_TESTS:-0}" = 1 ]; then
-  packages+=(chromium python3-html5lib ccache)
+  packages+=(chromium python3-html5lib)
+fi
+
+preset=${LAB_PRESET:-}
+if [ -z "$preset" ]; then
+  # A student's repository (made by `course release`) has no test suite:
+  # build only what a student runs, `lab` and `course`.
+  if [ ! -d "$root/tests" ]; then preset=student
+  elif [ -n "${CI:-}" ]; then preset=ci; else preset=default; fi
+fi
+# A compiler cache for a tree with a test suite, from its first build on: the
+# tests that build copies of the repository take most of their files from it,
+# and only if the suite's own build went through it (were it installed by
+# scripts/test.sh alone, after `scripts/grade.sh` built without it, every copy
+# would compile every file afresh). An image's build (an autograder's, the
+# container's) goes without.
+if [ -d "$root/tests" ]; then
+  case $preset in default | ci | egl-only | asan) packages+=(ccache) ;; esac
 fi
 
 missing=()
@@ -63,13 +79,6 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends ${missing[*]}
 fi
 
-preset=${LAB_PRESET:-}
-if [ -z "$preset" ]; then
-  # A student's repository (made by `course release`) has no test suite:
-  # build only what a student runs, `lab` and `course`.
-  if [ ! -d "$root/tests" ]; then preset=student
-  elif [ -n "${CI:-}" ]; then preset=ci; else preset=default; fi
-fi
 cd "$root"
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset" -j "$(nproc)"
