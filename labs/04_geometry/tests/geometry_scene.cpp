@@ -93,20 +93,34 @@ std::vector<Face> exploded(std::vector<Face> faces, float amount) {
     return faces;
 }
 
-Hit cast(const std::vector<Face>& faces, int x, int y, float margin) {
+std::vector<Projected> project(const std::vector<Face>& faces) {
+    std::vector<Projected> front;
+    for (const Face& f : faces) {
+        Projected p{&f, {}, {}, 0.0f, glm::vec2(1e30f), glm::vec2(-1e30f)};
+        for (int i = 0; i < 3; ++i) {
+            p.w[i] = to_window(f.p[i]);
+            p.clip_w[i] = kEye.z - f.p[i].z;  // -z in eye space
+            p.lo = glm::min(p.lo, p.w[i]);
+            p.hi = glm::max(p.hi, p.w[i]);
+        }
+        // GL culls by the winding on screen: counter-clockwise is front.
+        p.area2 = cross2(p.w[1] - p.w[0], p.w[2] - p.w[0]);
+        if (p.area2 > 0.0f) front.push_back(p);
+    }
+    return front;
+}
+
+Hit cast(const std::vector<Projected>& faces, int x, int y, float margin) {
     const glm::vec2 centre(x + 0.5f, y + 0.5f);
     Hit hit;
     float nearest_w = 1e30f;
-    for (const Face& f : faces) {
-        glm::vec2 w[3];
-        float clip_w[3];
-        for (int i = 0; i < 3; ++i) {
-            w[i] = to_window(f.p[i]);
-            clip_w[i] = kEye.z - f.p[i].z;  // -z in eye space
-        }
-        // GL culls by the winding on screen: counter-clockwise is front.
-        const float area2 = cross2(w[1] - w[0], w[2] - w[0]);
-        if (area2 <= 0.0f) continue;
+    for (const Projected& p : faces) {
+        if (glm::any(glm::lessThan(centre, p.lo - margin)) ||
+            glm::any(glm::greaterThan(centre, p.hi + margin)))
+            continue;
+        const glm::vec2* w = p.w;
+        const float* clip_w = p.clip_w;
+        const float area2 = p.area2;
         for (int i = 0; i < 3; ++i)
             if (distance_to_segment(centre, w[(i + 1) % 3], w[(i + 2) % 3]) < margin)
                 hit.ambiguous = true;
@@ -121,9 +135,9 @@ Hit cast(const std::vector<Face>& faces, int x, int y, float margin) {
         if (1.0f / inv_w >= nearest_w) continue;
         nearest_w = 1.0f / inv_w;
         glm::vec3 normal(0.0f);
-        for (int i = 0; i < 3; ++i) normal += l[i] / clip_w[i] / inv_w * f.n[i];
+        for (int i = 0; i < 3; ++i) normal += l[i] / clip_w[i] / inv_w * p.face->n[i];
         hit.covered = true;
-        hit.color = f.color * std::max(glm::dot(glm::normalize(normal), kLight), 0.0f);
+        hit.color = p.face->color * std::max(glm::dot(glm::normalize(normal), kLight), 0.0f);
         // Distance to edge i's line: l_i times the height over that edge.
         hit.edge_distance = 1e30f;
         for (int i = 0; i < 3; ++i)

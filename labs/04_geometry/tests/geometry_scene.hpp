@@ -58,6 +58,21 @@ struct Hit {
     glm::vec3 color{0.0f};
     float edge_distance = 0.0f;
 };
-Hit cast(const std::vector<Face>& faces, int x, int y, float margin);
+// A front face as the rasterizer sees it, projected once for every pixel:
+// its corners in window pixels, their eye depths (the clip w), twice its
+// window area, and its window bounding box (a pixel centre outside it, by
+// more than the margin, can neither be covered by the face nor be ambiguous
+// because of it).
+struct Projected {
+    const Face* face;
+    glm::vec2 w[3];
+    float clip_w[3];
+    float area2;
+    glm::vec2 lo, hi;
+};
+// The front faces of `faces` (back faces, culled, are left out), which must
+// outlive the result.
+std::vector<Projected> project(const std::vector<Face>& faces);
+Hit cast(const std::vector<Projected>& faces, int x, int y, float margin);
 
 }  // namespace geometry_test

@@ -44,9 +44,10 @@ float distance_from_centre(int x, int y) {
 // logging the first few as Expected/Observed.
 int mismatches(const fw::Image& img, const std::vector<Face>& faces, bool wireframe = false) {
     int bad = 0, compared = 0;
+    const std::vector<Projected> front = project(faces);
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
-            const Hit hit = cast(faces, x, y, 0.05f);
+            const Hit hit = cast(front, x, y, 0.05f);
             if (hit.ambiguous) continue;
             if (wireframe && hit.covered && std::abs(hit.edge_distance - 1.0f) < 0.05f) continue;
             glm::vec3 expected = hit.covered ? hit.color : kBlack;

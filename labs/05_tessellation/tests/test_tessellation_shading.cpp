@@ -48,11 +48,14 @@ struct Flag {
         // Only the slab |z| <= D can hold the surface; the ray runs towards -z.
         const float enter = (D - origin.z) / dir.z, leave = (-D - origin.z) / dir.z;
         constexpr float kStep = 1e-3f;
+        // g at the step's start: the last step's end, computed once.
+        float g_start = g(enter - kStep);
         for (float t = enter - kStep; t < leave + kStep; t += kStep) {
             // A root in [t, t + kStep]: the ray passes through the surface,
             // from the front or (beside the flag, or from behind) the back.
-            const bool above = g(t) > 0.0f;
-            if (above == (g(t + kStep) > 0.0f)) continue;
+            const bool above = g_start > 0.0f;
+            g_start = g(t + kStep);
+            if (above == (g_start > 0.0f)) continue;
             float lo = t, hi = t + kStep;
             for (int i = 0; i < 30; ++i) {
                 const float mid = 0.5f * (lo + hi);
