@@ -96,7 +96,7 @@ std::vector<Face> exploded(std::vector<Face> faces, float amount) {
 std::vector<Projected> project(const std::vector<Face>& faces) {
     std::vector<Projected> front;
     for (const Face& f : faces) {
-        Projected p{&f, {}, {}, 0.0f, glm::vec2(1e30f), glm::vec2(-1e30f)};
+        Projected p{f, {}, {}, 0.0f, glm::vec2(1e30f), glm::vec2(-1e30f)};
         for (int i = 0; i < 3; ++i) {
             p.w[i] = to_window(f.p[i]);
             p.clip_w[i] = kEye.z - f.p[i].z;  // -z in eye space
@@ -135,9 +135,9 @@ Hit cast(const std::vector<Projected>& faces, int x, int y, float margin) {
         if (1.0f / inv_w >= nearest_w) continue;
         nearest_w = 1.0f / inv_w;
         glm::vec3 normal(0.0f);
-        for (int i = 0; i < 3; ++i) normal += l[i] / clip_w[i] / inv_w * p.face->n[i];
+        for (int i = 0; i < 3; ++i) normal += l[i] / clip_w[i] / inv_w * p.face.n[i];
         hit.covered = true;
-        hit.color = p.face->color * std::max(glm::dot(glm::normalize(normal), kLight), 0.0f);
+        hit.color = p.face.color * std::max(glm::dot(glm::normalize(normal), kLight), 0.0f);
         // Distance to edge i's line: l_i times the height over that edge.
         hit.edge_distance = 1e30f;
         for (int i = 0; i < 3; ++i)

@@ -64,14 +64,13 @@ struct Hit {
 // more than the margin, can neither be covered by the face nor be ambiguous
 // because of it).
 struct Projected {
-    const Face* face;
+    Face face;
     glm::vec2 w[3];
     float clip_w[3];
     float area2;
     glm::vec2 lo, hi;
 };
-// The front faces of `faces` (back faces, culled, are left out), which must
-// outlive the result.
+// The front faces of `faces` (back faces, culled, are left out).
 std::vector<Projected> project(const std::vector<Face>& faces);
 Hit cast(const std::vector<Projected>& faces, int x, int y, float margin);
 
