@@ -2,6 +2,7 @@
 
 #include <malloc.h>
 
+#include <cstdio>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -60,6 +61,20 @@ json call_unit(const RegisteredLab& lab, const json& call) {
     return {{"error", "lab '" + lab.info.id + "' has no unit function '" + name + "'"}};
 }
 
+// Every unit call of the job, by id: its result, or the error it threw.
+json call_units(const RegisteredLab& lab, const json& calls) {
+    json units = json::object();
+    for (const json& call : calls) {
+        std::string id = call.value("id", "");
+        try {
+            units[id] = call_unit(lab, call);
+        } catch (const std::exception& e) {
+            units[id] = {{"error", e.what()}};
+        }
+    }
+    return units;
+}
+
 }  // namespace
 
 void grade_child(const std::string& job_path, const std::string& out_dir,
@@ -72,17 +87,7 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     const RegisteredLab& lab = find_lab(job.value("lab", ""));
 
     // Unit calls first: they need no context, so a broken shader costs them nothing.
-    json units = json::object();
-    const json calls = job.value("units", json::array());
-    for (const json& call : calls) {
-        std::string id = call.value("id", "");
-        try {
-            units[id] = call_unit(lab, call);
-        } catch (const std::exception& e) {
-            units[id] = {{"error", e.what()}};
-        }
-    }
-    write_json(out_dir + "/units.json", units);
+    write_json(out_dir + "/units.json", call_units(lab, job.value("units", json::array())));
 
     json context_json = nullptr;
     std::string init_error;
@@ -116,10 +121,27 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     if (renderer)
         for (const ShaderError* e : renderer->programs().build_errors())
             shader_errors.push_back({{"file", e->file()}, {"message", e->what()}});
-    write_json(out_dir + "/child.json", {{"complete", true},
-                                         {"context", context_json},
-                                         {"init_error", init_error},
-                                         {"shader_errors", shader_errors}});
+    // What the lab printed is in the pipe before course sees the lab done.
+    std::fflush(stdout);
+    std::fflush(stderr);
+    // Written whole, then renamed: course takes the name as the lab's end.
+    const std::string done = out_dir + "/child.json";
+    write_json(done + ".part", {{"complete", true},
+                                {"context", context_json},
+                                {"init_error", init_error},
+                                {"shader_errors", shader_errors}});
+    if (std::rename((done + ".part").c_str(), done.c_str()) != 0)
+        throw Error("cannot rename '" + done + ".part' to '" + done + "'");
+}
+
+void grade_children(const std::vector<std::string>& jobs, const std::vector<std::string>& outs,
+                    const std::string& backend) {
+    if (jobs.size() != outs.size())
+        throw UsageError("grade-child: " + std::to_string(jobs.size()) + " --job but " +
+                         std::to_string(outs.size()) + " --out; give one --out per --job");
+    // In turn, each in a context of its own; the first that throws ends the
+    // child, and course grades it and the labs after it again.
+    for (size_t i = 0; i < jobs.size(); ++i) grade_child(jobs[i], outs[i], backend);
 }
 
 }  // namespace fw

@@ -1,6 +1,7 @@
-// `lab grade-child --job JOB.json --out DIR`: what `course grade` runs in a
-// child process. It renders the frames and evaluates the unit calls that the
-// job lists, in one context, and writes raw outputs only; it decides nothing.
+// `lab grade-child --job JOB.json --out DIR [--job ... --out ...]`: what
+// `course grade` runs in a child process, for one lab or several in turn. It renders the frames and
+// evaluates the unit calls that the job lists, in one context, and writes raw outputs only; it
+// decides nothing.
 //
 // JOB.json (written by `course`):
 //   {"lab": "transforms",
@@ -18,10 +19,18 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace fw {
 
 void grade_child(const std::string& job_path, const std::string& out_dir,
                  const std::string& backend);
+
+// Several labs in one process, in turn: jobs[i] into outs[i]. Each lab has a
+// context of its own, and its child.json appears (by rename) only when all
+// of its outputs are written and its output is flushed, so course can tell
+// how far the child got and when each lab ended.
+void grade_children(const std::vector<std::string>& jobs, const std::vector<std::string>& outs,
+                    const std::string& backend);
 
 }  // namespace fw

@@ -198,17 +198,23 @@ Command add_render_checkpoints(CLI::App& app, RenderCheckpointsArgs& a) {
 }
 
 struct GradeChildArgs {
-    std::string job, out, backend;
+    std::vector<std::string> jobs, outs;
+    std::string backend;
 };
 
 Command add_grade_child(CLI::App& app, GradeChildArgs& a) {
     auto* grade_child = app.add_subcommand(
         "grade-child", "Used by 'course grade': render and evaluate what a job file lists");
     grade_child->group("");  // not listed in --help: course's interface, not the user's
-    grade_child->add_option("--job", a.job, "Job file (JSON)")->required();
-    grade_child->add_option("--out", a.out, "Directory for the outputs")->required();
+    // One --out per --job, in the same order: the labs are graded in turn.
+    grade_child->add_option("--job", a.jobs, "Job file (JSON); repeated for several labs")
+        ->required()
+        ->take_all();
+    grade_child->add_option("--out", a.outs, "Directory for each job's outputs")
+        ->required()
+        ->take_all();
     grade_child->add_option("--backend", a.backend, "auto|osmesa|egl");
-    return {grade_child, done([&a] { fw::grade_child(a.job, a.out, a.backend); })};
+    return {grade_child, done([&a] { fw::grade_children(a.jobs, a.outs, a.backend); })};
 }
 
 struct RunArgs {

@@ -134,21 +134,15 @@ struct ChildSetup {
     unsigned seed = 0;
 };
 
-// One lab: planned here, on the lab's worker, while other labs' children
-// run (its unit checks' random arguments, seeded by the run's seed and the
-// lab, are thousands of values), run in its child, then judged on as many
-// threads as `threads()` says when the child is done.
-LabResult grade_lab(const LabData& lab, const ChildSetup& setup,
-                    const std::function<int()>& threads) {
-    const LabPlan plan = plan_lab(lab, setup.seed, PlanFor::Grading);
-    LabChild child = run_lab_child(setup.lab_binary, plan.job, setup.backend, setup.limits,
-                                   setup.user, setup.cache);
+// One lab's result from what its child left.
+LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& child,
+                      const std::string& out, int threads) {
     LabResult result;
     result.lab = lab.id;
     result.status = child.run.status;
     result.log = child.run.log;
     result.seconds = child.run.seconds;
-    result.checks = judge_lab(lab, plan, *child.outputs, setup.out, threads());
+    result.checks = judge_lab(lab, plan, *child.outputs, out, threads);
     result.hidden_left_out = lab.file.hidden_checkpoints;
     result.hidden_points_left_out = lab.file.hidden_points;
     if (child.run.ok()) {
@@ -156,6 +150,34 @@ LabResult grade_lab(const LabData& lab, const ChildSetup& setup,
         if (!shader_error.empty()) result.status = LabStatus::failed(shader_error);
     }
     return result;
+}
+
+// Labs graded by one child: planned here, on the worker, while other
+// workers' children run (a lab's unit checks' random arguments, seeded by the
+// run's seed and the lab, are thousands of values), run in one child (a lab
+// that breaks it is graded again alone: run_lab_children), and each judged,
+// on as many threads as `threads()` says, as soon as it has ended, while
+// the child goes on with the next.
+std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const ChildSetup& setup,
+                                  const std::function<int()>& threads) {
+    std::vector<LabPlan> plans;
+    std::vector<nlohmann::json> jobs;
+    for (const LabData* lab : labs) {
+        plans.push_back(plan_lab(*lab, setup.seed, PlanFor::Grading));
+        jobs.push_back(plans.back().job);
+    }
+    std::vector<LabResult> results(labs.size());
+    using Ended = std::pair<size_t, LabChild>;
+    Pipeline<Ended> judging([&](Ended& e) {
+        results[e.first] =
+            judge_child(*labs[e.first], plans[e.first], e.second, setup.out, threads());
+    });
+    run_lab_children(setup.lab_binary, jobs, setup.backend, setup.limits, setup.user, setup.cache,
+                     [&judging](size_t i, LabChild&& child) {
+                         judging.push({i, std::move(child)});
+                     });
+    judging.finish();
+    return results;
 }
 
 // Labs between their plan and their verdict: those sharing the cores.
@@ -202,17 +224,24 @@ int grade_command(const GradeOptions& options) {
     run.sandbox = sandbox_layers(setup.user, setup.limits, namespaces_why, cgroups_why);
     if (options.sandbox == GradeOptions::Sandbox::Strict) require_every_layer(run.sandbox);
 
-    // --jobs workers take labs in order; each lab is one child.
+    // --jobs workers, each with one child for its share of the labs (every
+    // jobs-th lab): one process start per worker, not per lab.
     run.labs.resize(labs.size());
     std::mutex print_mutex;
     std::atomic<int> in_flight{0};
     const std::function<int()> threads = [&in_flight] { return judging_threads(in_flight); };
-    parallel_for(labs.size(), options.jobs, [&](size_t i) {
+    const size_t workers = std::min<size_t>(labs.size(), static_cast<size_t>(options.jobs));
+    parallel_for(workers, options.jobs, [&](size_t w) {
+        std::vector<const LabData*> share;
+        for (size_t i = w; i < labs.size(); i += workers) share.push_back(&labs[i]);
         const InFlight flight(in_flight);
-        run.labs[i] = grade_lab(labs[i], setup, threads);
-        if (!options.progress) return;
-        std::lock_guard<std::mutex> lock(print_mutex);
-        print_progress(run.labs[i]);
+        std::vector<LabResult> results = grade_labs(share, setup, threads);
+        for (size_t k = 0; k < results.size(); ++k) {
+            run.labs[w + k * workers] = std::move(results[k]);
+            if (!options.progress) continue;
+            std::lock_guard<std::mutex> lock(print_mutex);
+            print_progress(run.labs[w + k * workers]);
+        }
     });
 
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -236,15 +236,18 @@ struct ChildStart {
 class ChildWatch {
 public:
     using Clock = std::chrono::steady_clock;
-    ChildWatch(pid_t pid, int out, const ChildStart& c, Clock::time_point start)
-        : pid_(pid), out_(out), dir_(c.dir), limits_(c.limits), start_(start) {}
+    ChildWatch(pid_t pid, int out, const ChildStart& c, Clock::time_point start, LabMarks* marks)
+        : pid_(pid), out_(out), dir_(c.dir), limits_(c.limits), start_(start), marks_(marks) {}
 
     // Until the child has exited and its pipe is drained (or held open past
     // the drain time by something it left behind).
     void watch() {
+        // With several labs, often enough that each lab's seconds are its own.
+        const int tick_ms = marks_ ? 5 : 50;
         while (!(exited_ && (eof_ || elapsed() > drain_until_))) {
             pollfd p{out_, POLLIN, 0};
-            poll(&p, eof_ ? 0 : 1, 50);  // after EOF: just wait
+            poll(&p, eof_ ? 0 : 1, tick_ms);  // after EOF: just wait
+            if (marks_) note_ended_labs();
             read_output();
             const pid_t waited = exited_ ? 0 : waitpid(pid_, &wait_status_, WNOHANG);
             if (waited < 0 && errno == ECHILD) {
@@ -262,8 +265,7 @@ public:
             if (!exited_) check_limits();
         }
         run_.seconds = elapsed();
-        if (run_.log.size() > limits_.log_kept)
-            run_.log.erase(0, run_.log.size() - limits_.log_kept);
+        keep_tail(run_.log);
     }
 
     bool killed() const { return killed_; }
@@ -294,12 +296,36 @@ private:
         }
     }
 
+    // A lab whose mark has appeared has ended: all it printed is in the pipe
+    // (the child flushed before the rename), so it is read and kept as that
+    // lab's, and the next lab's limits count from here.
+    void note_ended_labs() {
+        struct stat st;
+        while (marks_->ended.size() < marks_->files.size() &&
+               lstat(marks_->files[marks_->ended.size()].c_str(), &st) == 0) {
+            read_output();
+            const double now = elapsed();
+            keep_tail(run_.log);
+            marks_->ended.push_back({now - lab_start_, std::move(run_.log)});
+            run_.log.clear();
+            written_ = 0;
+            lab_start_ = now;
+            dir_base_ = directory_bytes(dir_);
+            if (marks_->on_end) marks_->on_end(marks_->ended.size() - 1);
+        }
+    }
+
+    void keep_tail(std::string& log) const {
+        if (log.size() > limits_.log_kept) log.erase(0, log.size() - limits_.log_kept);
+    }
+
     void check_limits() {
-        if (elapsed() > limits_.timeout_seconds)
+        if (elapsed() - lab_start_ > limits_.timeout_seconds)
             stop("timed out after " + fw::number_text(limits_.timeout_seconds) + " s");
         if (elapsed() > next_size_check_) {
             next_size_check_ = elapsed() + 0.25;
-            if (directory_bytes(dir_) > limits_.work_dir_cap)
+            const std::uint64_t bytes = directory_bytes(dir_);
+            if (bytes - std::min(dir_base_, bytes) > limits_.work_dir_cap)
                 stop("wrote more than " + mib_text(limits_.work_dir_cap) +
                      " into its work directory");
         }
@@ -310,6 +336,9 @@ private:
     const std::string& dir_;
     const ChildLimits& limits_;
     Clock::time_point start_;
+    LabMarks* marks_;
+    double lab_start_ = 0.0;      // when the lab now running began (marks_)
+    std::uint64_t dir_base_ = 0;  // the work directory's bytes then
     ChildRun run_;
     std::uint64_t written_ = 0;
     bool killed_ = false, exited_ = false, eof_ = false;
@@ -337,10 +366,11 @@ LabStatus exit_status(int wait_status, const ChildStart& c) {
 
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
                    const ChildLimits& limits, const RunAsUser* user,
-                   const std::vector<std::string>& env) {
+                   const std::vector<std::string>& env, LabMarks* marks) {
     static const SeccompFilter filter;  // built once, before any fork
     ChildStart start(argv, dir, limits, user, env);
     start.filter = &filter;
+    if (marks) start.cpu_seconds *= std::max<rlim_t>(1, marks->files.size());
     std::unique_ptr<LabCgroup> cgroup;
     if (limits.cgroups) {
         cgroup =
@@ -360,7 +390,7 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     if (start.devnull >= 0) close(start.devnull);
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
 
-    ChildWatch watch(pid, fds[0], start, started);
+    ChildWatch watch(pid, fds[0], start, started, marks);
     watch.watch();
     close(fds[0]);
     ChildRun run = std::move(watch.run());

@@ -8,6 +8,7 @@
 #include <sys/types.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -49,11 +50,28 @@ private:
     const RunAsUser* user_ = nullptr;
 };
 
+// For a child that grades several labs in turn: the file whose appearance
+// ends each lab (its child.json, renamed into place when the lab is done),
+// and, as they appear, each ended lab's seconds and output. Each lab's
+// timeout and caps on output and on what it adds to the work directory
+// count from the end of the lab before it, as if it ran alone. `on_end`,
+// when set, is called with a lab's index as soon as it has ended, on the
+// thread that watches the child.
+struct LabMarks {
+    std::vector<std::string> files;
+    struct Ended {
+        double seconds = 0.0;
+        std::string log;
+    };
+    std::vector<Ended> ended;
+    std::function<void(size_t)> on_end;
+};
+
 // Runs argv[0] with argv in `dir` and waits for it within the limits. `env`
 // ("NAME=value") is added to course's environment, replacing what it names.
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
                    const ChildLimits& limits, const RunAsUser* user,
-                   const std::vector<std::string>& env = {});
+                   const std::vector<std::string>& env = {}, LabMarks* marks = nullptr);
 
 // The files a finished child left, read with limits. Every failure is a
 // sentence fit for a check's output.
@@ -84,7 +102,7 @@ private:
 // The `lab` grade-child run for one job: writes JOB.json into a fresh work
 // directory, runs the child there and keeps the directory for reading.
 struct LabChild {
-    std::unique_ptr<WorkDir> dir;
+    std::shared_ptr<WorkDir> dir;  // shared by the labs of one child (run_lab_children)
     ChildRun run;
     std::unique_ptr<ChildOutputs> outputs;
 };
@@ -102,6 +120,22 @@ struct ShaderCache {
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                        const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
                        const ShaderCache& shader_cache = {});
+
+// Several labs in one child, in turn (`lab grade-child` with a --job and
+// --out for each), each in a subdirectory of one work directory, for the
+// cost of one process start. A lab that did not end normally there (the
+// child crashed, hung or broke a limit in it, or ended before it) is graded
+// again in a child of its own, and the labs after it in another child, so
+// that a lab's result never depends on the labs beside it. `ready` gets each
+// job's index and result as soon as it is known (a lab that ended in the
+// child while the child goes on with the next), on the calling thread or the
+// one watching the child; when the child fails after its last lab, each lab
+// is graded again alone and `ready` gets it a second time, to replace the
+// first.
+using LabReady = std::function<void(size_t, LabChild&&)>;
+void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann::json>& jobs,
+                      const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
+                      const ShaderCache& shader_cache, const LabReady& ready);
 
 // Bytes in regular files under `dir`, not following links.
 std::uint64_t directory_bytes(const std::string& dir);

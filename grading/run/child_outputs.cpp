@@ -1,5 +1,5 @@
 // Reading back what a `lab` grade-child left in its work directory
-// (child.hpp: ChildOutputs, run_lab_child), with limits: links, special files
+// (child.hpp: ChildOutputs), with limits: links, special files
 // and anything over its size limit are refused.
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "framework/error.hpp"
 #include "grading/run/child.hpp"
@@ -75,47 +74,6 @@ bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::strin
         return false;
     }
     return true;
-}
-
-LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
-                       const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
-                       const ShaderCache& shader_cache) {
-    LabChild child;
-    child.dir = std::make_unique<WorkDir>(user);
-    const std::string dir = child.dir->path();
-    const std::string job_path = dir + "/JOB.json";
-    {
-        // Written while the directory is still course's: nothing of the
-        // user's can have put a link in its place.
-        std::ofstream out(job_path);
-        if (!(out << job.dump() << "\n")) throw fw::Error("cannot write '" + job_path + "'");
-    }
-    std::vector<std::string> env;
-    if (!shader_cache.dir.empty()) {
-        std::string cache = shader_cache.dir;
-        if (!shader_cache.shared) {
-            cache = dir + "/shader-cache";
-            std::error_code ec;
-            std::filesystem::copy(shader_cache.dir, cache, std::filesystem::copy_options::recursive,
-                                  ec);
-            if (ec)
-                throw fw::Error("cannot copy the shader cache '" + shader_cache.dir +
-                                "' into the lab's work directory: " + ec.message());
-        }
-        // Mesa's cache (llvmpipe, and Mesa's GPU drivers) and NVIDIA's, both
-        // in the copy; a driver that keeps neither compiles every shader.
-        env = {"MESA_SHADER_CACHE_DIR=" + cache,       "MESA_DISK_CACHE_SINGLE_FILE=1",
-               "MESA_SHADER_CACHE_DISABLE=false",      "__GL_SHADER_DISK_CACHE=1",
-               "__GL_SHADER_DISK_CACHE_PATH=" + cache, "__GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1"};
-    }
-    child.dir->hand_over();
-    std::vector<std::string> argv = {lab_binary, "grade-child", "--job", job_path, "--out", dir};
-    if (!backend.empty()) argv.insert(argv.end(), {"--backend", backend});
-    child.run = run_child(argv, dir, limits, user, env);
-    child.outputs = std::make_unique<ChildOutputs>(dir, child.run, limits);
-    if (child.run.ok() && !child.outputs->too_large().empty())
-        child.run.status = LabStatus::failed(child.outputs->too_large());
-    return child;
 }
 
 }  // namespace grading

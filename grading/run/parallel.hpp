@@ -1,14 +1,18 @@
-// Work spread over threads: the labs of `course grade --jobs N`, and the
-// checkpoints of one lab while course judges them.
+// Work spread over threads: the labs of `course grade --jobs N`, the
+// checkpoints of one lab while course judges them, and a lab's judging while
+// its child goes on with the next.
 #pragma once
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <cstddef>
+#include <deque>
 #include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace grading {
@@ -37,6 +41,65 @@ inline void parallel_for(size_t count, int threads, const std::function<void(siz
     for (std::thread& t : helpers) t.join();
     if (failure) std::rethrow_exception(failure);
 }
+
+// A thread of its own that calls `fn` on each item given to push(), in that
+// order, while the thread that pushes goes on: a lab's judging while its
+// child renders the next lab. finish() waits until every item is done and
+// rethrows the first exception `fn` threw; the destructor waits too.
+template <class Item>
+class Pipeline {
+public:
+    explicit Pipeline(std::function<void(Item&)> fn)
+        : fn_(std::move(fn)), thread_([this] { run(); }) {}
+    ~Pipeline() { stop(); }
+    Pipeline(const Pipeline&) = delete;
+    Pipeline& operator=(const Pipeline&) = delete;
+
+    void push(Item item) {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            items_.push_back(std::move(item));
+        }
+        wake_.notify_one();
+    }
+    void finish() {
+        stop();
+        if (failure_) std::rethrow_exception(failure_);
+    }
+
+private:
+    void stop() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            done_ = true;
+        }
+        wake_.notify_one();
+        if (thread_.joinable()) thread_.join();
+    }
+    void run() {
+        for (;;) {
+            std::unique_lock<std::mutex> lock(mutex_);
+            wake_.wait(lock, [this] { return done_ || !items_.empty(); });
+            if (items_.empty()) return;
+            Item item = std::move(items_.front());
+            items_.pop_front();
+            lock.unlock();
+            try {
+                if (!failure_) fn_(item);
+            } catch (...) {
+                failure_ = std::current_exception();
+            }
+        }
+    }
+
+    std::function<void(Item&)> fn_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::deque<Item> items_;
+    bool done_ = false;
+    std::exception_ptr failure_;  // written by the thread, read after join
+    std::thread thread_;          // last: started once the rest is ready
+};
 
 // The CPUs this process may run on (its affinity mask, as nproc counts
 // them), at least one.

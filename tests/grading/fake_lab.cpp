@@ -1,10 +1,13 @@
 // A hostile stand-in for `lab grade-child`, run by `course grade --lab`.
 // For the lab named by FAKE_LAB_TARGET it misbehaves as FAKE_LAB_MODE says;
 // for every other lab it becomes the real `lab` (exec), so that tests can
-// show one lab's misbehaviour costs the others nothing.
+// show one lab's misbehaviour costs the others nothing. Given several labs
+// at once (course's one child for several), it has the real lab grade the
+// others first, then misbehaves for the target, as if it came last.
 //
 //   segv        dies of SIGSEGV before writing anything
 //   hang        never returns (course's timeout must end it)
+//   exit_segv   the real lab's outputs, child.json too, then SIGSEGV
 //   spew        writes to stdout without end
 //   bigfile     writes one file past course's per-file limit
 //   fill        writes 1 MiB files without end (course's work directory cap)
@@ -31,7 +34,8 @@
 //   forkbomb    forks up to FAKE_LAB_FORKS children that wait, prints how
 //               many it made, exits 3
 //   quick       writes nothing (no frame, no shader cache) and exits 0
-// FAKE_LAB_MARK: a file the fake creates whenever it runs.
+// FAKE_LAB_MARK: a file the fake appends a line to whenever it runs:
+// "ran:" and the labs it was given.
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netdb.h>
@@ -76,7 +80,7 @@ std::string real_lab() {
 }
 
 // Runs the real lab with our arguments and waits for it.
-int run_real(char** argv) {
+int run_real(char* const* argv) {
     const std::string real = real_lab();
     pid_t pid = fork();
     if (pid == 0) {
@@ -228,22 +232,62 @@ void snoop(const std::string& read_path, const std::string& write_dir) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    std::string job_path, out;
-    for (int i = 1; i + 1 < argc; ++i) {
-        if (std::string(argv[i]) == "--job") job_path = argv[i + 1];
-        if (std::string(argv[i]) == "--out") out = argv[i + 1];
+// `lab grade-child` arguments for some of the jobs: {lab, "grade-child",
+// --job J --out D for each, --backend B when given}.
+struct ChildArgs {
+    std::vector<std::string> args;
+    std::vector<char*> argv() {
+        std::vector<char*> v;
+        for (std::string& a : args) v.push_back(a.data());
+        v.push_back(nullptr);
+        return v;
     }
-    if (!env("FAKE_LAB_MARK").empty()) write_text(env("FAKE_LAB_MARK"), "ran\n");
-    std::ifstream in(job_path);
-    const json job = json::parse(in, nullptr, false);
+};
+
+int main(int argc, char** argv) {
+    // Every --job/--out pair (course gives several when one child grades
+    // several labs), and --backend.
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::string backend;
+    for (int i = 1; i + 1 < argc; ++i) {
+        if (std::string(argv[i]) == "--job") pairs.push_back({argv[i + 1], ""});
+        if (std::string(argv[i]) == "--out" && !pairs.empty()) pairs.back().second = argv[i + 1];
+        if (std::string(argv[i]) == "--backend") backend = argv[i + 1];
+    }
     const std::string mode = env("FAKE_LAB_MODE");
-    if (!job.is_object() || mode.empty() || job.value("lab", "") != env("FAKE_LAB_TARGET")) {
+    // The target's job, and the real lab's arguments for the others.
+    json job;
+    std::string out;
+    ChildArgs target{{real_lab(), "grade-child"}}, others{{real_lab(), "grade-child"}};
+    std::string ran = "ran:";
+    for (const auto& [path, dir] : pairs) {
+        std::ifstream in(path);
+        const json j = json::parse(in, nullptr, false);
+        ran += " " + (j.is_object() ? j.value("lab", "?") : std::string("?"));
+        const bool hit =
+            !mode.empty() && j.is_object() && j.value("lab", "") == env("FAKE_LAB_TARGET");
+        if (hit) {
+            job = j;
+            out = dir;
+        }
+        ChildArgs& to = hit ? target : others;
+        to.args.insert(to.args.end(), {"--job", path, "--out", dir});
+    }
+    if (!env("FAKE_LAB_MARK").empty())
+        std::ofstream(env("FAKE_LAB_MARK"), std::ios::app) << ran << "\n";
+    if (!backend.empty())
+        for (ChildArgs* a : {&target, &others})
+            a->args.insert(a->args.end(), {"--backend", backend});
+    if (job.is_null()) {
         const std::string real = real_lab();
         execv(real.c_str(), argv);
         std::perror(("fake_lab: exec " + real).c_str());
         return 127;
     }
+    // The other labs of the child first, as the real lab grades them; then
+    // the target misbehaves, as if it were graded last.
+    if (others.args.size() > 2) run_real(others.argv().data());
+    std::vector<char*> target_argv = target.argv();  // the target's job alone
     const json renders = job.value("renders", json::array());
     const json units = job.value("units", json::array());
     std::printf("fake_lab: %s for lab %s\n", mode.c_str(), job.value("lab", "").c_str());
@@ -256,6 +300,10 @@ int main(int argc, char** argv) {
         std::raise(SIGSEGV);
     } else if (mode == "hang") {
         for (;;) pause();
+    } else if (mode == "exit_segv") {
+        run_real(target_argv.data());
+        std::signal(SIGSEGV, SIG_DFL);
+        std::raise(SIGSEGV);
     } else if (mode == "spew") {
         const std::string chunk(1 << 20, 'x');
         for (;;) std::fwrite(chunk.data(), 1, chunk.size(), stdout);
@@ -310,7 +358,7 @@ int main(int argc, char** argv) {
                 std::perror("fake_lab: symlink");
         }
     } else if (mode == "wrong_unit") {
-        const int rc = run_real(argv);
+        const int rc = run_real(target_argv.data());
         std::ifstream results_in(out + "/units.json");
         json results = json::parse(results_in, nullptr, false);
         for (auto& [id, entry] : results.items())
@@ -318,7 +366,7 @@ int main(int argc, char** argv) {
         write_text(out + "/units.json", results.dump());
         return rc;
     } else if (mode == "transposed_unit") {
-        const int rc = run_real(argv);
+        const int rc = run_real(target_argv.data());
         std::ifstream results_in(out + "/units.json");
         json results = json::parse(results_in, nullptr, false);
         for (auto& [id, entry] : results.items())
@@ -340,14 +388,14 @@ int main(int argc, char** argv) {
                        " the work directory\ncache: " + std::to_string(writable) + " of " +
                        std::to_string(files) + " files writable\n");
         write_text(dir + "/planted.txt", "planted\n");
-        return run_real(argv);
+        return run_real(target_argv.data());
     } else if (mode == "network") {
         return try_network(std::atoi(env("FAKE_LAB_PORT").c_str()));
     } else if (mode == "ptrace") {
         return try_ptrace();
     } else if (mode == "daemon") {
         leave_daemon(env("FAKE_LAB_SNOOP_WRITE"));
-        return run_real(argv);
+        return run_real(target_argv.data());
     } else if (mode == "forkbomb") {
         const int wanted = std::atoi(env("FAKE_LAB_FORKS").c_str());
         int made = 0;
@@ -402,7 +450,7 @@ int main(int argc, char** argv) {
     } else if (mode == "notutf8") {
         std::printf("notutf8: \xff\xfe bad \xc3\x28 bytes, \x1b[31mred\x1b[0m, <b>&amp;</b>\n");
         std::fflush(stdout);
-        return run_real(argv);
+        return run_real(target_argv.data());
     } else if (mode == "outside") {
         // Writes where a lab has no business (the test names the files:
         // beside the references, into the report directory, ...).
@@ -420,7 +468,7 @@ int main(int argc, char** argv) {
         std::string text;
         for (std::string line; std::getline(groups, line);) text += "cgroups: " + line + "\n";
         write_text(env("FAKE_LAB_REPORT"), text);
-        return run_real(argv);
+        return run_real(target_argv.data());
     } else if (mode == "snoop") {
         snoop(env("FAKE_LAB_SNOOP_READ"), env("FAKE_LAB_SNOOP_WRITE"));
         return 3;

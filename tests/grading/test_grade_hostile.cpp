@@ -4,6 +4,7 @@
 // checks of its own lab with the reason, the reports are complete, and the
 // other lab, graded in the same run, keeps full marks.
 #include <cstdio>
+#include <map>
 
 #include "tests/grading/grade_support.hpp"
 
@@ -132,4 +133,53 @@ TEST_CASE("course grade: a child's claims count for nothing; only its raw output
     MESSAGE("Expected score " << black << ", observed " << g.results["score"]);
     CHECK(g.results["score"].get<double>() == black);
     check_reports(fw::test::out_dir() + "/report", lab0_checks().size());
+}
+
+TEST_CASE(
+    "course grade --jobs 1: one child grades the labs in turn; a lab that breaks it is "
+    "graded again alone, and its neighbour keeps its result") {
+    struct Case {
+        std::string mode, status;
+        std::vector<std::string> runs;  // the fake's FAKE_LAB_MARK lines
+    };
+    // A crash in robot-arm: pipeline ended before it and is not run again;
+    // robot-arm alone crashes again. A crash after both ended: which lab's
+    // code broke the child is unknown, so each is graded again alone.
+    const Case cases[] = {
+        {"segv", "crashed (signal 11, SIGSEGV)", {"ran: pipeline robot-arm", "ran: robot-arm"}},
+        {"exit_segv",
+         "crashed (signal 11, SIGSEGV)",
+         {"ran: pipeline robot-arm", "ran: pipeline", "ran: robot-arm"}},
+    };
+    const size_t pipeline_checks = lab0_checks().size();
+    for (const Case& c : cases) {
+        CAPTURE(c.mode);
+        const std::string out = fw::test::out_dir() + "/one-child-" + c.mode,
+                          mark = fw::test::out_dir() + "/one-child-" + c.mode + ".runs";
+        fs::remove(mark);
+        Graded g =
+            grade("FAKE_LAB_TARGET=robot-arm FAKE_LAB_MODE=" + c.mode + " FAKE_LAB_MARK=" + mark,
+                  "pipeline robot-arm --jobs 1 --lab " + fake_lab(), out);
+        CHECK(g.exit_code == 1);
+        std::ifstream in(mark);
+        std::vector<std::string> runs;
+        for (std::string line; std::getline(in, line);) runs.push_back(line);
+        CHECK(runs == c.runs);
+        // Each lab's status in summary.txt: only robot-arm's is not "ok".
+        std::ifstream summary(out + "/summary.txt");
+        const std::string text((std::istreambuf_iterator<char>(summary)), {});
+        std::map<std::string, std::string> status;
+        for (const std::vector<std::string>& row : summary_rows(text))
+            if (row.size() > 3) status[row[0]] = row[3];
+        CHECK(status["pipeline"] == "ok");
+        CHECK_MESSAGE(status["robot-arm"] == "crashed", text);
+        CHECK(g.output.find(c.status) != std::string::npos);
+        const json pipeline = lab_tests(g.results, "pipeline");
+        CHECK(pipeline.size() == pipeline_checks);
+        for (const json& t : pipeline) {
+            CAPTURE(t.dump());
+            CHECK(t["status"] == "passed");
+        }
+        CHECK(!lab_tests(g.results, "robot-arm").empty());
+    }
 }
