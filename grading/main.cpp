@@ -62,7 +62,10 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
                       "The lab executable to grade (default: beside course)");
     grade->add_option("--out", g.out, "Report directory (default build/grade)");
     grade->add_option("--backend", g.backend, kBackendHelp);
-    grade->add_option("--jobs", g.jobs, "Labs graded in parallel")->check(CLI::Range(1, 64));
+    grade
+        ->add_option("--jobs", g.jobs,
+                     "Children grading labs in parallel, each every N-th lab in turn")
+        ->check(CLI::Range(1, 64));
     grade->add_option("--timeout", g.timeout_seconds, "Seconds per lab (default 60)")
         ->check(CLI::Range(1.0, 3600.0));
     grade->add_option("--run-as", g.run_as, "Run the child as this user (when root)");

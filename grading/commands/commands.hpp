@@ -30,7 +30,7 @@ struct GradeOptions {
     // and index.html have them always).
     bool verbose = false;
     // --shader-cache: a shader cache made by `course warm-cache`; each
-    // lab's child starts from its own copy. Empty: the driver's default.
+    // child starts from its own copy. Empty: the driver's default.
     std::string shader_cache;
     // --sandbox: auto uses every layer the machine allows; strict refuses to
     // grade when namespaces or cgroups are missing.

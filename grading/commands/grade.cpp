@@ -99,7 +99,7 @@ std::string backend_name(const GradeOptions& options) {
                                          : "auto";
 }
 
-// --shader-cache: the directory each lab's child starts from a copy of.
+// --shader-cache: the directory each child starts from a copy of.
 ShaderCache shader_cache_of(const GradeOptions& options) {
     ShaderCache cache;
     if (options.shader_cache.empty()) return cache;
@@ -125,7 +125,7 @@ void require_every_layer(const std::vector<SandboxLayer>& layers) {
             "or grade with --sandbox auto");
 }
 
-// What one lab's child is run with, the same for every lab of a run.
+// What every child is run with, the same for every lab of a run.
 struct ChildSetup {
     std::string lab_binary, backend, out;
     ChildLimits limits;
