@@ -2,8 +2,9 @@
 // For the lab named by FAKE_LAB_TARGET it misbehaves as FAKE_LAB_MODE says;
 // for every other lab it becomes the real `lab` (exec), so that tests can
 // show one lab's misbehaviour costs the others nothing. Given several labs
-// at once (course's one child for several), it has the real lab grade the
-// others first, then misbehaves for the target, as if it came last.
+// at once (course's one child for several), it keeps their order: the real
+// lab grades those before the target, the target misbehaves, and when that
+// returns 0 the real lab grades those after it.
 //
 //   segv        dies of SIGSEGV before writing anything
 //   hang        never returns (course's timeout must end it)
@@ -230,8 +231,6 @@ void snoop(const std::string& read_path, const std::string& write_dir) {
     if (fd >= 0) close(fd);
 }
 
-}  // namespace
-
 // `lab grade-child` arguments for some of the jobs: {lab, "grade-child",
 // --job J --out D for each, --backend B when given}.
 struct ChildArgs {
@@ -244,50 +243,10 @@ struct ChildArgs {
     }
 };
 
-int main(int argc, char** argv) {
-    // Every --job/--out pair (course gives several when one child grades
-    // several labs), and --backend.
-    std::vector<std::pair<std::string, std::string>> pairs;
-    std::string backend;
-    for (int i = 1; i + 1 < argc; ++i) {
-        if (std::string(argv[i]) == "--job") pairs.push_back({argv[i + 1], ""});
-        if (std::string(argv[i]) == "--out" && !pairs.empty()) pairs.back().second = argv[i + 1];
-        if (std::string(argv[i]) == "--backend") backend = argv[i + 1];
-    }
-    const std::string mode = env("FAKE_LAB_MODE");
-    // The target's job, and the real lab's arguments for the others.
-    json job;
-    std::string out;
-    ChildArgs target{{real_lab(), "grade-child"}}, others{{real_lab(), "grade-child"}};
-    std::string ran = "ran:";
-    for (const auto& [path, dir] : pairs) {
-        std::ifstream in(path);
-        const json j = json::parse(in, nullptr, false);
-        ran += " " + (j.is_object() ? j.value("lab", "?") : std::string("?"));
-        const bool hit =
-            !mode.empty() && j.is_object() && j.value("lab", "") == env("FAKE_LAB_TARGET");
-        if (hit) {
-            job = j;
-            out = dir;
-        }
-        ChildArgs& to = hit ? target : others;
-        to.args.insert(to.args.end(), {"--job", path, "--out", dir});
-    }
-    if (!env("FAKE_LAB_MARK").empty())
-        std::ofstream(env("FAKE_LAB_MARK"), std::ios::app) << ran << "\n";
-    if (!backend.empty())
-        for (ChildArgs* a : {&target, &others})
-            a->args.insert(a->args.end(), {"--backend", backend});
-    if (job.is_null()) {
-        const std::string real = real_lab();
-        execv(real.c_str(), argv);
-        std::perror(("fake_lab: exec " + real).c_str());
-        return 127;
-    }
-    // The other labs of the child first, as the real lab grades them; then
-    // the target misbehaves, as if it were graded last.
-    if (others.args.size() > 2) run_real(others.argv().data());
-    std::vector<char*> target_argv = target.argv();  // the target's job alone
+// The target's misbehaviour (the modes above); its exit status when it
+// returns.
+int misbehave(const std::string& mode, const json& job, const std::string& out,
+              std::vector<char*> target_argv) {
     const json renders = job.value("renders", json::array());
     const json units = job.value("units", json::array());
     std::printf("fake_lab: %s for lab %s\n", mode.c_str(), job.value("lab", "").c_str());
@@ -477,4 +436,55 @@ int main(int argc, char** argv) {
         return 64;
     }
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // Every --job/--out pair (course gives several when one child grades
+    // several labs), and --backend.
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::string backend;
+    for (int i = 1; i + 1 < argc; ++i) {
+        if (std::string(argv[i]) == "--job") pairs.push_back({argv[i + 1], ""});
+        if (std::string(argv[i]) == "--out" && !pairs.empty()) pairs.back().second = argv[i + 1];
+        if (std::string(argv[i]) == "--backend") backend = argv[i + 1];
+    }
+    const std::string mode = env("FAKE_LAB_MODE");
+    // The target's job, and the real lab's arguments for the others.
+    json job;
+    std::string out;
+    ChildArgs target{{real_lab(), "grade-child"}}, before{{real_lab(), "grade-child"}},
+        after{{real_lab(), "grade-child"}};
+    std::string ran = "ran:";
+    for (const auto& [path, dir] : pairs) {
+        std::ifstream in(path);
+        const json j = json::parse(in, nullptr, false);
+        ran += " " + (j.is_object() ? j.value("lab", "?") : std::string("?"));
+        const bool hit =
+            !mode.empty() && j.is_object() && j.value("lab", "") == env("FAKE_LAB_TARGET");
+        if (hit) {
+            job = j;
+            out = dir;
+        }
+        ChildArgs& to = hit ? target : job.is_null() ? before : after;
+        to.args.insert(to.args.end(), {"--job", path, "--out", dir});
+    }
+    if (!env("FAKE_LAB_MARK").empty())
+        std::ofstream(env("FAKE_LAB_MARK"), std::ios::app) << ran << "\n";
+    if (!backend.empty())
+        for (ChildArgs* a : {&target, &before, &after})
+            a->args.insert(a->args.end(), {"--backend", backend});
+    if (job.is_null()) {
+        const std::string real = real_lab();
+        execv(real.c_str(), argv);
+        std::perror(("fake_lab: exec " + real).c_str());
+        return 127;
+    }
+    // In the child's order: the labs before the target as the real lab
+    // grades them, the target misbehaving, and, when it returns 0, the labs
+    // after it.
+    if (before.args.size() > 2) run_real(before.argv().data());
+    const int rc = misbehave(mode, job, out, target.argv());
+    return rc == 0 && after.args.size() > 2 ? run_real(after.argv().data()) : rc;
 }
