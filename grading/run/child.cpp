@@ -264,6 +264,8 @@ public:
             }
             if (!exited_) check_limits();
         }
+        // A last lab that ended just before the child did.
+        if (marks_) note_ended_labs();
         run_.seconds = elapsed();
         keep_tail(run_.log);
     }
@@ -296,9 +298,8 @@ private:
         }
     }
 
-    // A lab whose mark has appeared has ended: all it printed is in the pipe
-    // (the child flushed before the rename), so it is read and kept as that
-    // lab's, and the next lab's limits count from here.
+    // A lab whose mark is there has ended, all it printed in the pipe (flushed
+    // first): that is its log, and the next lab's limits count from here.
     void note_ended_labs() {
         struct stat st;
         while (marks_->ended.size() < marks_->files.size() &&
