@@ -172,10 +172,11 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
         results[e.first] =
             judge_child(*labs[e.first], plans[e.first], e.second, setup.out, threads());
     });
+    const LabReady ended = [&judging](size_t i, LabChild&& child) {
+        judging.push({i, std::move(child)});
+    };
     run_lab_children(setup.lab_binary, jobs, setup.backend, setup.limits, setup.user, setup.cache,
-                     [&judging](size_t i, LabChild&& child) {
-                         judging.push({i, std::move(child)});
-                     });
+                     ended);
     judging.finish();
     return results;
 }
