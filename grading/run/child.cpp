@@ -68,40 +68,6 @@ void set_limit(int resource, rlim_t value, const char* name) {
 
 }  // namespace
 
-std::uint64_t directory_bytes(const std::string& dir) {
-    std::uint64_t total = 0;
-    std::error_code ec;
-    for (fs::recursive_directory_iterator
-             it(dir, fs::directory_options::skip_permission_denied, ec),
-         end;
-         !ec && it != end; it.increment(ec)) {
-        struct stat st;
-        if (lstat(it->path().c_str(), &st) == 0 && S_ISREG(st.st_mode))
-            total += static_cast<std::uint64_t>(st.st_size);
-    }
-    return total;
-}
-
-std::string signal_status(int signal) {
-    const char* abbrev = sigabbrev_np(signal);
-    return "crashed (signal " + std::to_string(signal) + ", " +
-           (abbrev ? "SIG" + std::string(abbrev) : std::string("unknown")) + ")";
-}
-
-std::string indented_tail(const std::string& log, int lines) {
-    std::vector<std::string> all;
-    for (size_t pos = 0; pos < log.size();) {
-        size_t nl = std::min(log.find('\n', pos), log.size());
-        all.push_back(log.substr(pos, nl - pos));
-        pos = nl + 1;
-    }
-    std::string out;
-    for (size_t i = all.size() > size_t(lines) ? all.size() - size_t(lines) : 0; i < all.size();
-         ++i)
-        out += "    | " + (all[i].size() > 200 ? all[i].substr(0, 200) + "..." : all[i]) + "\n";
-    return out;
-}
-
 RunAsUser lookup_user(const std::string& name) {
     if (geteuid() != 0)
         throw fw::UsageError(

@@ -1,13 +1,15 @@
 // Reading back what a `lab` grade-child left in its work directory
 // (child.hpp: ChildOutputs), with limits: links, special files
-// and anything over its size limit are refused.
+// and anything over its size limit are refused; and how a child ended, in words.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
 #include "framework/error.hpp"
 #include "grading/run/child.hpp"
@@ -74,6 +76,26 @@ bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::strin
         return false;
     }
     return true;
+}
+
+std::string signal_status(int signal) {
+    const char* abbrev = sigabbrev_np(signal);
+    return "crashed (signal " + std::to_string(signal) + ", " +
+           (abbrev ? "SIG" + std::string(abbrev) : std::string("unknown")) + ")";
+}
+
+std::string indented_tail(const std::string& log, int lines) {
+    std::vector<std::string> all;
+    for (size_t pos = 0; pos < log.size();) {
+        size_t nl = std::min(log.find('\n', pos), log.size());
+        all.push_back(log.substr(pos, nl - pos));
+        pos = nl + 1;
+    }
+    std::string out;
+    for (size_t i = all.size() > size_t(lines) ? all.size() - size_t(lines) : 0; i < all.size();
+         ++i)
+        out += "    | " + (all[i].size() > 200 ? all[i].substr(0, 200) + "..." : all[i]) + "\n";
+    return out;
 }
 
 }  // namespace grading

@@ -1,4 +1,4 @@
-// WorkDir (child.hpp): a child's private working directory.
+// WorkDir (child.hpp): a child's private working directory, and the bytes in it.
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -39,6 +39,20 @@ void WorkDir::hand_over() {
     // Nothing of the user's is in it yet: these are course's own files.
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(path_))
         give(e.path().string());
+}
+
+std::uint64_t directory_bytes(const std::string& dir) {
+    std::uint64_t total = 0;
+    std::error_code ec;
+    for (fs::recursive_directory_iterator
+             it(dir, fs::directory_options::skip_permission_denied, ec),
+         end;
+         !ec && it != end; it.increment(ec)) {
+        struct stat st;
+        if (lstat(it->path().c_str(), &st) == 0 && S_ISREG(st.st_mode))
+            total += static_cast<std::uint64_t>(st.st_size);
+    }
+    return total;
 }
 
 WorkDir::~WorkDir() {
