@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -47,18 +48,28 @@ std::string tuple(const std::vector<double>& v) { return "(" + fw::join(v, ", ",
 // One checkpoint's frame, each output read once for all its checks.
 class Frame {
 public:
-    Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& out_dir,
-          const std::string& lab)
+    Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& lab)
         : outputs_(outputs), plan_(plan) {
         has_color_ = read_rendered(outputs, plan, color_, color_why_);
-        if (has_color_) {
-            // The one PNG of the frame, for the reports (and written on the
-            // grading worker's thread, so --jobs spreads the encoding).
-            rendered_ = lab + "/" + plan.checkpoint + ".png";
-            fw::write_png(out_dir + "/" + rendered_, color_);
-        }
+        if (has_color_) rendered_ = lab + "/" + plan.checkpoint + ".png";
     }
     const std::string& rendered() const { return rendered_; }
+
+    // An image check found the frame pixel for pixel equal to the reference
+    // in `path`: publish() copies that file instead of encoding the frame.
+    void same_pixels_as(const std::string& path) { same_as_ = path; }
+
+    // The one PNG of the frame, for the reports, once its checks are done
+    // (on the grading worker's thread, so --jobs spreads the encoding).
+    void publish(const std::string& out_dir) const {
+        if (!has_color_) return;
+        const std::string to = out_dir + "/" + rendered_;
+        if (same_as_.empty()) return fw::write_png(to, color_);
+        std::error_code ec;
+        std::filesystem::copy_file(same_as_, to, std::filesystem::copy_options::overwrite_existing,
+                                   ec);
+        if (ec) throw fw::Error("cannot copy " + same_as_ + " into the report: " + ec.message());
+    }
 
     const fw::Image* color(std::string& why) const {
         why = "no image: " + color_why_;
@@ -124,7 +135,7 @@ private:
     RenderPlan plan_;
     bool has_color_ = false;
     fw::Image color_;
-    std::string color_why_, rendered_;
+    std::string color_why_, rendered_, same_as_;
     std::optional<fw::DepthImage> depth_;
     bool depth_failed_ = false;
     std::string depth_why_;
@@ -170,6 +181,10 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
     fw::CompareOptions verdict_only = opt;
     verdict_only.difference = false;
     fw::CompareResult c = fw::compare_images(*image, reference, verdict_only);
+    if (image->width == reference.width && image->height == reference.height &&
+        std::memcmp(image->pixels.data(), reference.pixels.data(),
+                    image->pixels.size() * sizeof(fw::Rgba8)) == 0)
+        frame.same_pixels_as(ref_path);
     r.expected = lab.id + "/" + cp.name + ".expected.png";
     // The reference is course's own file: copied, not encoded again.
     std::error_code ec;
@@ -342,7 +357,7 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
         const fw::Checkpoint& cp = checkpoints[k];
         std::optional<Frame> frame;
         auto r = renders.find(cp.name);
-        if (r != renders.end()) frame.emplace(outputs, *r->second, out_dir, lab.id);
+        if (r != renders.end()) frame.emplace(outputs, *r->second, lab.id);
         const std::vector<Check>& checks = lab.checks.at(k);
         const Visibility visibility = visibility_named(cp.visibility);
         for (size_t i = 0; i < checks.size(); ++i) {
@@ -379,6 +394,7 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
             }
             by_checkpoint[k].push_back(std::move(result));
         }
+        if (frame) frame->publish(out_dir);
     });
     std::vector<CheckResult> results;
     for (std::vector<CheckResult>& checks : by_checkpoint)

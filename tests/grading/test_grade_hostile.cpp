@@ -133,6 +133,18 @@ TEST_CASE("course grade: a child's claims count for nothing; only its raw output
     MESSAGE("Expected score " << black << ", observed " << g.results["score"]);
     CHECK(g.results["score"].get<double>() == black);
     check_reports(fw::test::out_dir() + "/report", lab0_checks().size());
+    // The report's frames are the black ones it rendered, never a copy of
+    // the reference it was compared with.
+    int frames = 0;
+    for (const json& cp : doc["checkpoints"]) {
+        const std::string png =
+            fw::test::out_dir() + "/report/pipeline/" + cp["name"].get<std::string>() + ".png";
+        if (!std::ifstream(png)) continue;
+        ++frames;
+        const fw::Image shown = fw::read_png(png);
+        CHECK_MESSAGE(shown.pixels == blank.pixels, png << " is not the black frame rendered");
+    }
+    CHECK(frames > 0);
 }
 
 TEST_CASE(
