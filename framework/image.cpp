@@ -1,9 +1,8 @@
-// PNG written here over libdeflate and read by stb_image, JPEG by libjpeg-turbo,
-// PFM by hand. PAM: image_pam.cpp; the comparison: image_compare.cpp.
+// PNG written here over libdeflate, JPEG by libjpeg-turbo, PFM by hand. PNG
+// read: png_read.cpp; PAM: image_pam.cpp; the comparison: image_compare.cpp.
 #include "framework/image.hpp"
 
 #include <libdeflate.h>
-#include <stb/stb_image.h>
 #include <turbojpeg.h>
 
 #include <algorithm>
@@ -42,15 +41,6 @@ std::string read_file(const std::string& path, const char* kind) {
     std::ostringstream ss;
     ss << in.rdbuf();
     return ss.str();
-}
-
-// Rows of `src` in the opposite order: GL's bottom-first <-> PNG's top-first.
-std::vector<Rgba8> flip_rows(const std::vector<Rgba8>& src, int w, int h) {
-    std::vector<Rgba8> out(src.size());
-    for (int y = 0; y < h; ++y)
-        std::copy_n(src.begin() + static_cast<long>(y) * w, w,
-                    out.begin() + static_cast<long>(h - 1 - y) * w);
-    return out;
 }
 
 }  // namespace
@@ -275,22 +265,6 @@ bool png_header_size(const std::string& bytes, int& width, int& height) {
     width = static_cast<int>(w);
     height = static_cast<int>(h);
     return true;
-}
-
-Image decode_png(const std::string& bytes, const std::string& name) {
-    static const char signature[] = "\x89PNG\r\n\x1a\n";
-    if (bytes.compare(0, 8, signature, 8) != 0)
-        throw Error("cannot read PNG '" + name + "': not a PNG file");
-    int w = 0, h = 0, channels = 0;
-    // Asking for 4 components converts grey, grey+alpha and RGB to RGBA8.
-    stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
-                                          static_cast<int>(bytes.size()), &w, &h, &channels, 4);
-    if (!data) throw Error("cannot read PNG '" + name + "': " + stbi_failure_reason());
-    Image img(w, h);
-    std::memcpy(img.pixels.data(), data, img.pixels.size() * 4);
-    stbi_image_free(data);
-    img.pixels = flip_rows(img.pixels, w, h);
-    return img;
 }
 
 // ---- PFM -------------------------------------------------------------------

@@ -62,6 +62,11 @@ Image shrink(const Image& img, int max_side, bool brightest = false);
 Image read_png(const std::string& path);
 // The same from a PNG file's bytes already in memory; `name` is for messages.
 Image decode_png(const std::string& bytes, const std::string& name);
+// decode_png's own path, for the PNGs course reads by the hundred (8 bits a
+// channel, grey, grey and alpha, RGB or RGBA, not interlaced, no palette or
+// transparency chunk): false, and `img` unspecified, for any other file or a
+// damaged one, which decode_png then gives to stb_image.
+bool decode_plain_png(const std::string& bytes, Image& img);
 // The width and height a PNG's header (its IHDR chunk) states, read without
 // decoding anything; false when `bytes` does not start like a PNG.
 bool png_header_size(const std::string& bytes, int& width, int& height);

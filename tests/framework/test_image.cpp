@@ -236,6 +236,82 @@ TEST_CASE("png_header_size reads the size without decoding, and refuses what is 
     CHECK_FALSE(fw::png_header_size(huge, w, h));
 }
 
+TEST_CASE("PNG reading: each filter, colour type and size reads as stb_image reads it") {
+    // stb_image_write's files, one filter forced on every row (or its own
+    // choice per row, -1), over noise and gradients in 1 to 4 channels.
+    const int sizes[][2] = {{1, 1}, {37, 11}, {64, 48}};
+    unsigned seed = 7;
+    int files = 0;
+    for (const auto& size : sizes)
+        for (int channels = 1; channels <= 4; ++channels) {
+            const int w = size[0], h = size[1];
+            std::vector<unsigned char> top_first(size_t(w) * h * channels);
+            for (size_t i = 0; i < top_first.size(); ++i) {
+                seed = seed * 1103515245u + 12345u;
+                top_first[i] = static_cast<unsigned char>(i % 3 ? (seed >> 16) : i * 7 / 5);
+            }
+            for (int filter = -1; filter <= 4; ++filter) {
+                stbi_write_force_png_filter = filter;
+                std::string bytes;
+                REQUIRE(stbi_write_png_to_func(
+                    [](void* to, void* data, int n) {
+                        static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(n));
+                    },
+                    &bytes, w, h, channels, top_first.data(), w * channels));
+                int sw = 0, sh = 0, sc = 0;
+                stbi_uc* want =
+                    stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                          static_cast<int>(bytes.size()), &sw, &sh, &sc, 4);
+                REQUIRE(want);
+                Image direct;
+                const bool taken = fw::decode_plain_png(bytes, direct);
+                CHECK_MESSAGE(taken, channels << " channels, filter " << filter);
+                const Image read = fw::decode_png(bytes, "noise.png");
+                for (const Image* img : {static_cast<const Image*>(&direct), &read}) {
+                    REQUIRE(img->width == w);
+                    REQUIRE(img->height == h);
+                    bool same = true;
+                    for (int y = 0; y < h; ++y)  // stb's rows are top first, ours bottom first
+                        same &= std::memcmp(&img->at(0, h - 1 - y), want + size_t(y) * w * 4,
+                                            size_t(w) * 4) == 0;
+                    CHECK_MESSAGE(
+                        same, w << "x" << h << ", " << channels << " channels, filter " << filter);
+                }
+                stbi_image_free(want);
+                ++files;
+            }
+        }
+    stbi_write_force_png_filter = -1;
+    CHECK(files == 72);
+    // Course's own files take the same path.
+    const Image frame = rect_image(40, 30, 5, 6, 20, 25, {10, 200, 30, 128});
+    Image back;
+    REQUIRE(fw::decode_plain_png(fw::encode_png(frame), back));
+    CHECK(back.pixels == frame.pixels);
+}
+
+TEST_CASE("PNG reading: a damaged or unusual file goes to stb_image, whose words say why") {
+    std::string bytes = fw::encode_png(rect_image(64, 64, 1, 2, 50, 60));
+    Image img;
+    REQUIRE(fw::decode_plain_png(bytes, img));
+    // Interlaced (IHDR's last byte; its CRC is not checked by either reader):
+    // the direct path leaves it to stb_image, which reads the stream as Adam7
+    // and so finds it wrong.
+    std::string interlaced = bytes;
+    interlaced[8 + 8 + 12] = 1;
+    CHECK_FALSE(fw::decode_plain_png(interlaced, img));
+    CHECK_THROWS_AS(fw::decode_png(interlaced, "i.png"), fw::Error);
+    // Cut short inside its pixels.
+    const std::string cut = bytes.substr(0, bytes.size() / 2);
+    CHECK_FALSE(fw::decode_plain_png(cut, img));
+    const std::string why = error_of([&] { fw::decode_png(cut, "cut.png"); });
+    CHECK(why.find("cannot read PNG 'cut.png': ") == 0);
+    // A byte of the compressed pixels changed: the stream's checksum fails.
+    std::string garbled = bytes;
+    garbled[bytes.size() - 30] ^= 0x5a;
+    CHECK_FALSE(fw::decode_plain_png(garbled, img));
+}
+
 TEST_CASE("PNG errors name the path") {
     std::string missing = fw::test::out_dir() + "/no_such.png";
     std::string msg = error_of([&] { fw::read_png(missing); });
