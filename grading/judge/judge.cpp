@@ -45,6 +45,13 @@ std::string compact(const json& j, size_t max = 240) {
 
 std::string tuple(const std::vector<double>& v) { return "(" + fw::join(v, ", ", num) + ")"; }
 
+// Course's own file `from` (a reference) into the report as `to`.
+void copy_into_report(const std::string& from, const std::string& to) {
+    std::error_code ec;
+    std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing, ec);
+    if (ec) throw fw::Error("cannot copy " + from + " into the report: " + ec.message());
+}
+
 // One checkpoint's frame, each output read once for all its checks.
 class Frame {
 public:
@@ -64,11 +71,7 @@ public:
     void publish(const std::string& out_dir) const {
         if (!has_color_) return;
         const std::string to = out_dir + "/" + rendered_;
-        if (same_as_.empty()) return fw::write_png(to, color_);
-        std::error_code ec;
-        std::filesystem::copy_file(same_as_, to, std::filesystem::copy_options::overwrite_existing,
-                                   ec);
-        if (ec) throw fw::Error("cannot copy " + same_as_ + " into the report: " + ec.message());
+        same_as_.empty() ? fw::write_png(to, color_) : copy_into_report(same_as_, to);
     }
 
     const fw::Image* color(std::string& why) const {
@@ -186,11 +189,7 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
                     image->pixels.size() * sizeof(fw::Rgba8)) == 0)
         frame.same_pixels_as(ref_path);
     r.expected = lab.id + "/" + cp.name + ".expected.png";
-    // The reference is course's own file: copied, not encoded again.
-    std::error_code ec;
-    std::filesystem::copy_file(ref_path, out_dir + "/" + r.expected,
-                               std::filesystem::copy_options::overwrite_existing, ec);
-    if (ec) throw fw::Error("cannot copy " + ref_path + " into the report: " + ec.message());
+    copy_into_report(ref_path, out_dir + "/" + r.expected);  // not encoded again
     // Where no pixel is beyond the tolerance, the difference image would be
     // the rendered frame in grey: none is written.
     if (!c.size_mismatch && c.failed_pixels > 0) {
