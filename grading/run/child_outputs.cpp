@@ -63,14 +63,22 @@ bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::strin
         why = "cannot read " + name + ": " + std::strerror(errno);
         return false;
     }
-    bytes.clear();
-    // The size lstat saw (within the limit), and one byte to see it grow.
-    bytes.reserve(static_cast<size_t>(st.st_size) + 1);
-    char buf[65536];
-    ssize_t n;
-    while ((n = ::read(fd, buf, sizeof buf)) > 0 && bytes.size() <= limit)
-        bytes.append(buf, static_cast<size_t>(n));
+    // Read straight into `bytes`: room for the size lstat saw (within the
+    // limit) and one byte more to see the file grow, widened while it does.
+    bytes.resize(static_cast<size_t>(st.st_size) + 1);
+    size_t got = 0;
+    for (;;) {
+        if (got == bytes.size()) {
+            if (got > limit) break;
+            bytes.resize(std::min<std::uint64_t>(limit + 1, 2 * std::uint64_t(got) + 4096));
+        }
+        const ssize_t n = ::read(fd, &bytes[got], bytes.size() - got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        got += static_cast<size_t>(n);
+    }
     close(fd);
+    bytes.resize(got);
     if (bytes.size() > limit) {
         why = "output too large: " + name + " grew past " + std::to_string(limit) + " bytes";
         return false;

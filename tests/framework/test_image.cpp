@@ -171,6 +171,24 @@ TEST_CASE("PAM round trip is exact, top row first, with the header of docs/contr
     CHECK(fw::test::read_text(path) == bytes);
 }
 
+TEST_CASE("write_pam writes encode_pam's bytes for frames of more rows than one writev takes") {
+    // 2500 rows: the header and the rows are more pieces than IOV_MAX (1024).
+    Image img(3, 2500);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x)
+            img.at(x, y) = {std::uint8_t(x), std::uint8_t(y), std::uint8_t(y >> 8), 255};
+    const std::string path = fw::test::out_dir() + "/tall.pam";
+    fw::write_pam(path, img);
+    const std::string bytes = fw::test::read_text(path);
+    CHECK(bytes == fw::encode_pam(img));
+    CHECK(fw::decode_pam(bytes, "tall.pam").pixels == img.pixels);
+    // A path that cannot be written is named, with the reason.
+    const std::string bad = fw::test::out_dir() + "/no-such-dir/t.pam";
+    const std::string message = fw::test::thrown([&] { fw::write_pam(bad, img); });
+    CHECK(message.find(bad) != std::string::npos);
+    CHECK(message.find("No such file or directory") != std::string::npos);
+}
+
 TEST_CASE("decode_pam refuses anything but the exact header and size, naming the file") {
     const std::string good = fw::encode_pam(Image(2, 2, kRed));
     const std::string pixels = good.substr(good.size() - 16);
