@@ -24,7 +24,7 @@
 #include <array>
 #include <glm/glm.hpp>
 #include <initializer_list>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: a file that uses a JSON value includes json.hpp
 #include <string>
 #include <type_traits>
 #include <typeindex>
