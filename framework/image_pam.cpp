@@ -8,16 +8,10 @@
 // header lines, each once, sizes within 1..65536, and exactly the bytes the
 // sizes call for. (pam_header_size reports any size the header states, so
 // that a caller can say which size it expected instead.)
-#include <fcntl.h>
-#include <limits.h>
-#include <sys/uio.h>
-#include <unistd.h>
-
-#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <map>
-#include <vector>
 
 #include "framework/error.hpp"
 #include "framework/image.hpp"
@@ -52,41 +46,19 @@ std::string encode_pam(const Image& img) {
 }
 
 // The same bytes as encode_pam, written from the image's own rows (the top
-// one first) by writev: no copy of the frame is made in memory, which a
-// grading child would otherwise do for each of its frames.
+// one first): a grading child writes a frame without copying it first.
 void write_pam(const std::string& path, const Image& img) {
     check_encodable(img);
-    const std::string header = pam_header(img);
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0)
+    std::ofstream out(path, std::ios::binary);
+    if (!out)
         throw Error("cannot write PAM '" + path + "': " + std::strerror(errno) +
                     "; check that its directory exists and is writable");
-    std::vector<iovec> pieces;
-    pieces.reserve(static_cast<size_t>(img.height) + 1);
-    pieces.push_back({const_cast<char*>(header.data()), header.size()});
-    const size_t row = static_cast<size_t>(img.width) * 4;
+    out << pam_header(img);
+    const auto row = static_cast<std::streamsize>(img.width) * 4;
     for (int y = img.height - 1; y >= 0; --y)
-        pieces.push_back({const_cast<Rgba8*>(&img.at(0, y)), row});
-    // At most IOV_MAX pieces a call; a short write goes on where it stopped.
-    size_t next = 0;
-    std::string failure;
-    while (next < pieces.size() && failure.empty()) {
-        const int count = static_cast<int>(std::min<size_t>(pieces.size() - next, IOV_MAX));
-        const ssize_t n = ::writev(fd, &pieces[next], count);
-        if (n <= 0) {
-            if (n == 0 || errno != EINTR)
-                failure = n == 0 ? "nothing written" : std::strerror(errno);
-            continue;
-        }
-        size_t left = static_cast<size_t>(n);
-        while (next < pieces.size() && left >= pieces[next].iov_len) left -= pieces[next++].iov_len;
-        if (left > 0) {
-            pieces[next].iov_base = static_cast<char*>(pieces[next].iov_base) + left;
-            pieces[next].iov_len -= left;
-        }
-    }
-    if (::close(fd) != 0 && failure.empty()) failure = std::strerror(errno);
-    if (!failure.empty()) throw Error("cannot write PAM '" + path + "': " + failure);
+        out.write(reinterpret_cast<const char*>(&img.at(0, y)), row);
+    out.close();
+    if (!out) throw Error("cannot write PAM '" + path + "': write failed (disk full?)");
 }
 
 namespace {
