@@ -269,6 +269,20 @@ bool png_header_size(const std::string& bytes, int& width, int& height) {
 
 // ---- PFM -------------------------------------------------------------------
 
+std::string encode_pfm(const DepthImage& img) {
+    if (img.values.size() != static_cast<size_t>(img.width) * img.height)
+        throw Error("cannot encode a PFM of " + std::to_string(img.width) + "x" +
+                    std::to_string(img.height) + " depth values: the image has " +
+                    std::to_string(img.values.size()));
+    // Scale -1.0: the minus sign means little endian (x86 and ARM order, as stored).
+    std::string bytes =
+        "Pf\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n-1.0\n";
+    const size_t header = bytes.size(), size = img.values.size() * sizeof(float);
+    bytes.resize(header + size);
+    std::memcpy(&bytes[header], img.values.data(), size);
+    return bytes;
+}
+
 void write_pfm(const std::string& path, const DepthImage& img) {
     if (img.values.size() != static_cast<size_t>(img.width) * img.height)
         throw Error("cannot write PFM '" + path + "': image has the wrong number of values");
@@ -276,10 +290,8 @@ void write_pfm(const std::string& path, const DepthImage& img) {
     if (!out)
         throw Error("cannot write PFM '" + path +
                     "': check that its directory exists and is writable");
-    // Scale -1.0: the minus sign means little endian (x86 and ARM order, as stored).
-    out << "Pf\n" << img.width << ' ' << img.height << "\n-1.0\n";
-    out.write(reinterpret_cast<const char*>(img.values.data()),
-              static_cast<std::streamsize>(img.values.size() * sizeof(float)));
+    const std::string bytes = encode_pfm(img);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     if (!out) throw Error("cannot write PFM '" + path + "': write failed (disk full?)");
 }
 

@@ -86,6 +86,7 @@ bool pam_header_size(const std::string& bytes, int& width, int& height);
 // PFM, single channel ("Pf"), little-endian float32, rows bottom first:
 // header "Pf\n<width> <height>\n-1.0\n". read_pfm accepts either byte order
 // (the sign of the scale) and rejects colour ("PF") files with a clear error.
+std::string encode_pfm(const DepthImage& img);
 void write_pfm(const std::string& path, const DepthImage& img);
 DepthImage read_pfm(const std::string& path);
 // The same from bytes already read; `name` is for messages.

@@ -1,8 +1,12 @@
 #include "framework/runner/grade_child.hpp"
 
+#include <fcntl.h>
 #include <malloc.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -19,9 +23,43 @@ namespace {
 
 using nlohmann::json;
 
+// Where a lab's outputs go: files, or with --output-fd records on that
+// descriptor ("OUTPUT SIZE PATH\n" and SIZE bytes; PATH the file it stands
+// for), which course keeps in memory: no file, and no page of a file, is made
+// for a frame. child.json is a file either way: its rename ends the lab.
+int output_fd = -1;
+
+void write_all(const char* data, size_t size, const std::string& path) {
+    while (size > 0) {
+        const ssize_t n = ::write(output_fd, data, size);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0)
+            throw Error("cannot send '" + path + "' to course on descriptor " +
+                        std::to_string(output_fd) + ": " + std::strerror(errno));
+        data += n;
+        size -= static_cast<size_t>(n);
+    }
+}
+
+void put_output(const std::string& path, const std::string& bytes) {
+    if (output_fd >= 0) {
+        const std::string header = "OUTPUT " + std::to_string(bytes.size()) + " " + path + "\n";
+        write_all(header.data(), header.size(), path);
+        write_all(bytes.data(), bytes.size(), path);
+        return;
+    }
+    std::ofstream out(path, std::ios::binary);
+    if (!out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+        throw Error("cannot write '" + path + "'");
+}
+
 void write_json(const std::string& path, const json& value) {
-    std::ofstream out(path);
     // Compact: course reads it, not a person, and units.json holds thousands of results.
+    put_output(path, value.dump() + "\n");
+}
+
+void write_file(const std::string& path, const json& value) {
+    std::ofstream out(path);
     if (!(out << value.dump() << "\n")) throw Error("cannot write '" + path + "'");
 }
 
@@ -48,9 +86,9 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     RenderOutput out =
         renderer.render(params, job.value("width", 512), job.value("height", 512), 0.0, read);
     // Raw pixels: course judges them and encodes only what a report shows.
-    write_pam(base + ".pam", out.color);
-    if (read.depth) write_pfm(base + ".pfm", out.depth);
-    if (read.buffers) write_buffers(base + ".buffers.json", out.buffers);
+    put_output(base + ".pam", encode_pam(out.color));
+    if (read.depth) put_output(base + ".pfm", encode_pfm(out.depth));
+    if (read.buffers) put_output(base + ".buffers.json", buffers_json(out.buffers));
     write_json(base + ".stats.json", out.stats);
 }
 
@@ -112,7 +150,7 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
             if (!renderer) throw Error(init_error);
             render_one(*renderer, lab, r, base);
         } catch (const std::exception& e) {
-            std::ofstream(base + ".error.txt") << e.what() << "\n";
+            put_output(base + ".error.txt", std::string(e.what()) + "\n");
         }
     }
     // Programs that failed to build: the renders that drew with them failed
@@ -126,7 +164,7 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     std::fflush(stderr);
     // Written whole, then renamed: course takes the name as the lab's end.
     const std::string done = out_dir + "/child.json";
-    write_json(done + ".part", {{"complete", true},
+    write_file(done + ".part", {{"complete", true},
                                 {"context", context_json},
                                 {"init_error", init_error},
                                 {"shader_errors", shader_errors}});
@@ -135,7 +173,11 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
 }
 
 void grade_children(const std::vector<std::string>& jobs, const std::vector<std::string>& outs,
-                    const std::string& backend) {
+                    const std::string& backend, int outputs_fd) {
+    if (outputs_fd >= 0 && fcntl(outputs_fd, F_GETFD) < 0)
+        throw UsageError("grade-child: --output-fd " + std::to_string(outputs_fd) +
+                         " is not an open descriptor");
+    output_fd = outputs_fd;
     if (jobs.size() != outs.size())
         throw UsageError("grade-child: " + std::to_string(jobs.size()) + " --job but " +
                          std::to_string(outs.size()) + " --out; give one --out per --job");

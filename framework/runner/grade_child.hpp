@@ -16,6 +16,10 @@
 //                                         (Lab::buffers, framework/lab_buffers.hpp)
 //   units.json                            {"u0": {"result": ...} | {"error": "..."}}
 //   child.json                            written last: {"complete": true, "context": {...}}
+//
+// With --output-fd N every output but child.json is a record on descriptor N
+// instead of a file: "OUTPUT SIZE PATH\n" and then SIZE bytes, PATH the file's
+// path as above (course grade keeps them in memory; docs/contract.md).
 #pragma once
 
 #include <string>
@@ -30,7 +34,8 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
 // context of its own, and its child.json appears (by rename) only when all
 // of its outputs are written and its output is flushed, so course can tell
 // how far the child got and when each lab ended.
+// `outputs_fd`: --output-fd, or -1 for files.
 void grade_children(const std::vector<std::string>& jobs, const std::vector<std::string>& outs,
-                    const std::string& backend);
+                    const std::string& backend, int outputs_fd = -1);
 
 }  // namespace fw

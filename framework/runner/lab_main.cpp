@@ -200,6 +200,7 @@ Command add_render_checkpoints(CLI::App& app, RenderCheckpointsArgs& a) {
 struct GradeChildArgs {
     std::vector<std::string> jobs, outs;
     std::string backend;
+    int output_fd = -1;
 };
 
 Command add_grade_child(CLI::App& app, GradeChildArgs& a) {
@@ -214,7 +215,10 @@ Command add_grade_child(CLI::App& app, GradeChildArgs& a) {
         ->required()
         ->take_all();
     grade_child->add_option("--backend", a.backend, "auto|osmesa|egl");
-    return {grade_child, done([&a] { fw::grade_children(a.jobs, a.outs, a.backend); })};
+    grade_child->add_option("--output-fd", a.output_fd,
+                            "Send every output but child.json as records on this descriptor");
+    return {grade_child,
+            done([&a] { fw::grade_children(a.jobs, a.outs, a.backend, a.output_fd); })};
 }
 
 struct RunArgs {

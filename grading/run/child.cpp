@@ -159,6 +159,7 @@ struct ChildStart {
     pid_t parent = getpid();
     int devnull = -1;  // its stdin
     int out = -1;      // its stdout and stderr
+    int outputs = -1;  // its kOutputFd, when it sends its outputs
 };
 
 // The forked child, until it runs the lab: its own process group, its
@@ -169,6 +170,10 @@ struct ChildStart {
         for (const int fd : *c.cgroup_fds)
             if (write(fd, "0", 1) != 1) child_fail("joining the lab's cgroup");
     if (dup2(c.devnull, 0) < 0 || dup2(c.out, 1) < 0 || dup2(c.out, 2) < 0) child_fail("dup2");
+    // Already kOutputFd, the descriptor keeps its close-on-exec flag: cleared.
+    if (c.outputs >= 0 &&
+        (c.outputs == kOutputFd ? fcntl(kOutputFd, F_SETFD, 0) : dup2(c.outputs, kOutputFd)) < 0)
+        child_fail("dup2 of the output descriptor");
     if (chdir(c.dir.c_str()) != 0) child_fail("chdir to the work directory");
     set_limit(RLIMIT_CPU, c.cpu_seconds, "RLIMIT_CPU");
     set_limit(RLIMIT_FSIZE, c.limits.file_cap, "RLIMIT_FSIZE");
@@ -202,19 +207,30 @@ struct ChildStart {
 class ChildWatch {
 public:
     using Clock = std::chrono::steady_clock;
-    ChildWatch(pid_t pid, int out, const ChildStart& c, Clock::time_point start, LabMarks* marks)
-        : pid_(pid), out_(out), dir_(c.dir), limits_(c.limits), start_(start), marks_(marks) {}
+    ChildWatch(pid_t pid, int out, const ChildStart& c, Clock::time_point start, LabMarks* marks,
+               StreamedOutputs* streamed, int outputs)
+        : pid_(pid),
+          out_(out),
+          outputs_(outputs),
+          dir_(c.dir),
+          limits_(c.limits),
+          start_(start),
+          marks_(marks),
+          streamed_(streamed) {}
 
     // Until the child has exited and its pipe is drained (or held open past
     // the drain time by something it left behind).
     void watch() {
         // With several labs, often enough that each lab's seconds are its own.
         const int tick_ms = marks_ ? 5 : 50;
-        while (!(exited_ && (eof_ || elapsed() > drain_until_))) {
-            pollfd p{out_, POLLIN, 0};
-            poll(&p, eof_ ? 0 : 1, tick_ms);  // after EOF: just wait
+        while (!(exited_ && ((eof_ && streamed_eof()) || elapsed() > drain_until_))) {
+            // A pipe at its end is left out (-1): after both, just wait.
+            pollfd p[2] = {{eof_ ? -1 : out_, POLLIN, 0},
+                           {streamed_eof() ? -1 : outputs_, POLLIN, 0}};
+            poll(p, 2, tick_ms);
             if (marks_) note_ended_labs();
             read_output();
+            read_streamed(false);
             const pid_t waited = exited_ ? 0 : waitpid(pid_, &wait_status_, WNOHANG);
             if (waited < 0 && errno == ECHILD) {
                 // Reaped by someone else: its end is unknown, and waiting
@@ -264,13 +280,24 @@ private:
         }
     }
 
-    // A lab whose mark is there has ended, all it printed in the pipe (flushed
-    // first): that is its log, and the next lab's limits count from here.
+    bool streamed_eof() const { return !streamed_ || streamed_->eof(); }
+
+    // What the child sent on its output descriptor: everything in the pipe
+    // with `all`, else a share (so that a flood cannot hold up the limits).
+    void read_streamed(bool all) {
+        std::string why;
+        if (streamed_ && !streamed_->read(outputs_, limits_, all, why)) stop(why);
+    }
+
+    // A lab whose mark is there has ended, all it printed and sent in the
+    // pipes (written before the mark): that is its log and its outputs, and
+    // the next lab's limits count from here.
     void note_ended_labs() {
         struct stat st;
         while (marks_->ended.size() < marks_->files.size() &&
                lstat(marks_->files[marks_->ended.size()].c_str(), &st) == 0) {
             read_output();
+            read_streamed(true);
             const double now = elapsed();
             keep_tail(run_.log);
             marks_->ended.push_back({now - lab_start_, std::move(run_.log)});
@@ -278,6 +305,7 @@ private:
             written_ = 0;
             lab_start_ = now;
             dir_base_ = directory_bytes(dir_);
+            if (streamed_) streamed_->lab_began();
             if (marks_->on_end) marks_->on_end(marks_->ended.size() - 1);
         }
     }
@@ -292,18 +320,20 @@ private:
         if (elapsed() > next_size_check_) {
             next_size_check_ = elapsed() + 0.25;
             const std::uint64_t bytes = directory_bytes(dir_);
-            if (bytes - std::min(dir_base_, bytes) > limits_.work_dir_cap)
+            const std::uint64_t sent = streamed_ ? streamed_->lab_bytes() : 0;
+            if (bytes - std::min(dir_base_, bytes) + sent > limits_.work_dir_cap)
                 stop("wrote more than " + mib_text(limits_.work_dir_cap) +
                      " into its work directory");
         }
     }
 
     pid_t pid_;
-    int out_;
+    int out_, outputs_;
     const std::string& dir_;
     const ChildLimits& limits_;
     Clock::time_point start_;
     LabMarks* marks_;
+    StreamedOutputs* streamed_;
     double lab_start_ = 0.0;      // when the lab now running began (marks_)
     std::uint64_t dir_base_ = 0;  // the work directory's bytes then
     ChildRun run_;
@@ -333,7 +363,8 @@ LabStatus exit_status(int wait_status, const ChildStart& c) {
 
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
                    const ChildLimits& limits, const RunAsUser* user,
-                   const std::vector<std::string>& env, LabMarks* marks) {
+                   const std::vector<std::string>& env, LabMarks* marks,
+                   StreamedOutputs* streamed) {
     static const SeccompFilter filter;  // built once, before any fork
     ChildStart start(argv, dir, limits, user, env);
     start.filter = &filter;
@@ -348,6 +379,17 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     if (pipe2(fds, O_CLOEXEC) != 0) throw fw::Error(std::string("pipe: ") + std::strerror(errno));
     start.devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
     start.out = fds[1];
+    int outputs[2] = {-1, -1};
+    if (streamed) {
+        if (pipe2(outputs, O_CLOEXEC) != 0) {
+            close(fds[0]);
+            close(fds[1]);
+            throw fw::Error(std::string("pipe: ") + std::strerror(errno));
+        }
+        // A frame in one write where the system allows it (else 64 KiB at a time).
+        fcntl(outputs[1], F_SETPIPE_SZ, 1 << 20);
+        start.outputs = outputs[1];
+    }
     const auto started = ChildWatch::Clock::now();
     const pid_t pid = fork_lab();
     if (pid < 0) throw fw::Error(std::string("cannot fork the lab child: ") + std::strerror(errno));
@@ -356,10 +398,15 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
     close(fds[1]);
     if (start.devnull >= 0) close(start.devnull);
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
+    if (streamed) {
+        close(outputs[1]);
+        fcntl(outputs[0], F_SETFL, O_NONBLOCK);
+    }
 
-    ChildWatch watch(pid, fds[0], start, started, marks);
+    ChildWatch watch(pid, fds[0], start, started, marks, streamed, outputs[0]);
     watch.watch();
     close(fds[0]);
+    if (streamed) close(outputs[0]);
     ChildRun run = std::move(watch.run());
     if (!watch.killed()) run.status = exit_status(watch.wait_status(), start);
     lab_ended(pid);  // watch() has reaped it

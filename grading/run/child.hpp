@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -67,25 +68,64 @@ struct LabMarks {
     std::function<void(size_t)> on_end;
 };
 
+// What a child sends on its output descriptor (`lab grade-child --output-fd`,
+// always kOutputFd in the child) instead of writing files: records
+// "OUTPUT SIZE PATH\n" followed by SIZE bytes, each standing for the file PATH
+// in the work directory `dir` (DIR/NAME or DIR/I/NAME, NAME without a slash).
+// No file, and no page cache, is made for a frame. read() takes what the pipe
+// holds, on the thread that watches the child; a record over the per-file
+// cap, more bytes since the lab began than the work directory's cap, or
+// anything that is not a record stops the child (the reason in `why`). A
+// record cut short by the child's end is dropped, like a file never written.
+constexpr int kOutputFd = 3;
+class StreamedOutputs {
+public:
+    explicit StreamedOutputs(std::string dir) : dir_(std::move(dir)) {}
+    // Reads until the pipe is empty (`all`) or for at most 16 MiB; false
+    // with `why` when the child must be stopped.
+    bool read(int fd, const ChildLimits& limits, bool all, std::string& why);
+    bool eof() const { return eof_; }
+    // Bytes of the records begun since the last lab_began(): its share of the
+    // work directory's cap.
+    std::uint64_t lab_bytes() const { return received_ - lab_base_; }
+    void lab_began() { lab_base_ = received_; }
+    // The outputs of `sub` (the work directory itself or DIR/I), by NAME,
+    // removed from here.
+    std::map<std::string, std::string> take(const std::string& sub);
+
+private:
+    bool header(const ChildLimits& limits, std::string& why);
+    std::string dir_;
+    std::map<std::string, std::string> files_;  // by PATH
+    std::string pending_;                       // read, not yet a header or body
+    std::string* body_ = nullptr;               // the record being filled
+    std::string body_path_;
+    size_t got_ = 0;
+    std::uint64_t received_ = 0, lab_base_ = 0;
+    bool eof_ = false;
+};
+
 // Runs argv[0] with argv in `dir` and waits for it within the limits. `env`
 // ("NAME=value") is added to course's environment, replacing what it names.
+// With `streamed`, the child's kOutputFd is a pipe read into it.
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
                    const ChildLimits& limits, const RunAsUser* user,
-                   const std::vector<std::string>& env = {}, LabMarks* marks = nullptr);
+                   const std::vector<std::string>& env = {}, LabMarks* marks = nullptr,
+                   StreamedOutputs* streamed = nullptr);
 
-// The files a finished child left, read with limits. Every failure is a
-// sentence fit for a check's output.
+// The files a finished child left, and the outputs it sent instead of files
+// (StreamedOutputs::take), read with limits. Every failure is a sentence fit
+// for a check's output.
 class ChildOutputs {
 public:
-    ChildOutputs(std::string dir, const ChildRun& run, const ChildLimits& limits);
+    ChildOutputs(std::string dir, const ChildRun& run, const ChildLimits& limits,
+                 std::map<std::string, std::string> streamed = {});
 
     // The bytes of `name`, or false and `why`: missing (and then why: the
     // child crashed, timed out, or wrote NAME.error.txt instead), not a regular
     // file, or over `limit` bytes ("output too large").
     bool read(const std::string& name, std::uint64_t limit, std::string& bytes,
               std::string& why) const;
-    // Path of a file that read() accepted, for decoders that take a path.
-    std::string path(const std::string& name) const { return dir_ + "/" + name; }
     // Why there is no `name` when the child did not write it.
     std::string missing_reason(const std::string& name) const;
     // Non-empty when the work directory as a whole is over its cap.
@@ -96,6 +136,7 @@ public:
 private:
     std::string dir_;
     ChildRun run_;
+    std::map<std::string, std::string> streamed_;  // by name, as a file in dir_ would be
     std::string too_large_;  // set when the directory as a whole is over its cap
 };
 

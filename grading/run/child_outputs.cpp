@@ -16,9 +16,11 @@
 
 namespace grading {
 
-ChildOutputs::ChildOutputs(std::string dir, const ChildRun& run, const ChildLimits& limits)
-    : dir_(std::move(dir)), run_(run) {
-    const std::uint64_t total = directory_bytes(dir_);
+ChildOutputs::ChildOutputs(std::string dir, const ChildRun& run, const ChildLimits& limits,
+                           std::map<std::string, std::string> streamed)
+    : dir_(std::move(dir)), run_(run), streamed_(std::move(streamed)) {
+    std::uint64_t total = directory_bytes(dir_);
+    for (const auto& [name, bytes] : streamed_) total += bytes.size();
     if (total > limits.work_dir_cap)
         too_large_ = "output too large: the child left " + std::to_string(total) +
                      " bytes in its work directory, more than the " +
@@ -41,6 +43,16 @@ bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::strin
     if (!too_large_.empty()) {
         why = too_large_;
         return false;
+    }
+    // What the child sent for this name stands for its file.
+    if (const auto sent = streamed_.find(name); sent != streamed_.end()) {
+        if (sent->second.size() > limit) {
+            why = "output too large: " + name + " is " + std::to_string(sent->second.size()) +
+                  " bytes, more than the limit of " + std::to_string(limit);
+            return false;
+        }
+        bytes = sent->second;
+        return true;
     }
     const std::string file = dir_ + "/" + name;
     struct stat st;

@@ -44,9 +44,10 @@ std::vector<std::string> shader_cache_env(const ShaderCache& shader_cache, const
             "__GL_SHADER_DISK_CACHE_PATH=" + cache, "__GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1"};
 }
 
-// A lab's outputs in `dir`, as the run left them.
-void read_back(LabChild& child, const std::string& dir, const ChildLimits& limits) {
-    child.outputs = std::make_unique<ChildOutputs>(dir, child.run, limits);
+// A lab's outputs in `dir`, as the run left them and sent them.
+void read_back(LabChild& child, const std::string& dir, const ChildLimits& limits,
+               StreamedOutputs& streamed) {
+    child.outputs = std::make_unique<ChildOutputs>(dir, child.run, limits, streamed.take(dir));
     if (child.run.ok() && !child.outputs->too_large().empty())
         child.run.status = LabStatus::failed(child.outputs->too_large());
 }
@@ -67,6 +68,7 @@ std::vector<std::string> lay_out_labs(const WorkDir& dir, const std::vector<nloh
         marks.files.push_back(lab_dir + "/child.json");
     }
     if (!backend.empty()) argv.insert(argv.end(), {"--backend", backend});
+    argv.insert(argv.end(), {"--output-fd", std::to_string(kOutputFd)});
     return argv;
 }
 
@@ -82,10 +84,13 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
     write_job(job_path, job);
     const std::vector<std::string> env = shader_cache_env(shader_cache, dir);
     child.dir->hand_over();
-    std::vector<std::string> argv = {lab_binary, "grade-child", "--job", job_path, "--out", dir};
+    std::vector<std::string> argv = {
+        lab_binary, "grade-child", "--job",       job_path,
+        "--out",    dir,           "--output-fd", std::to_string(kOutputFd)};
     if (!backend.empty()) argv.insert(argv.end(), {"--backend", backend});
-    child.run = run_child(argv, dir, limits, user, env);
-    read_back(child, dir, limits);
+    StreamedOutputs streamed(dir);
+    child.run = run_child(argv, dir, limits, user, env, nullptr, &streamed);
+    read_back(child, dir, limits, streamed);
     return child;
 }
 
@@ -105,13 +110,14 @@ void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann:
     for (const nlohmann::json& job : jobs) labs.push_back(job.value("lab", "?"));
     const std::vector<std::string> env = shader_cache_env(shader_cache, dir->path());
     dir->hand_over();
+    StreamedOutputs streamed(dir->path());
     // A lab that ended in the child, with `tail` added to its log.
     auto ended_lab = [&](size_t i, const std::string& tail) {
         LabChild child;
         child.dir = dir;
         child.run.seconds = marks.ended[i].seconds;
         child.run.log = marks.ended[i].log + tail;
-        read_back(child, dir->path() + "/" + std::to_string(i), limits);
+        read_back(child, dir->path() + "/" + std::to_string(i), limits, streamed);
         return child;
     };
     // Each lab but the last is judged while the child goes on; the last
@@ -119,7 +125,7 @@ void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann:
     marks.on_end = [&](size_t i) {
         if (i + 1 < jobs.size()) ready(i, ended_lab(i, ""));
     };
-    const ChildRun run = run_child(argv, dir->path(), limits, user, env, &marks);
+    const ChildRun run = run_child(argv, dir->path(), limits, user, env, &marks, &streamed);
     const size_t ended = marks.ended.size();
     if (ended == jobs.size()) {
         ready(ended - 1,

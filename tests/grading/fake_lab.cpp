@@ -35,6 +35,11 @@
 //   forkbomb    forks up to FAKE_LAB_FORKS children that wait, prints how
 //               many it made, exits 3
 //   quick       writes nothing (no frame, no shader cache) and exits 0
+// and on its output descriptor (--output-fd), where course reads records:
+//   stream_garbage   a line that is not a record, then exits 0
+//   stream_outside   a record for a file outside its work directory
+//   stream_flood     1 MiB records without end (the work directory's cap)
+//   stream_cut       its first frame's record, cut short, then exits 0
 // FAKE_LAB_MARK: a file the fake appends a line to whenever it runs:
 // "ran:" and the labs it was given.
 #include <arpa/inet.h>
@@ -246,14 +251,30 @@ struct ChildArgs {
 // The target's misbehaviour (the modes above); its exit status when it
 // returns.
 int misbehave(const std::string& mode, const json& job, const std::string& out,
-              std::vector<char*> target_argv) {
+              std::vector<char*> target_argv, int output_fd) {
     const json renders = job.value("renders", json::array());
     const json units = job.value("units", json::array());
     std::printf("fake_lab: %s for lab %s\n", mode.c_str(), job.value("lab", "").c_str());
     std::fflush(stdout);
 
+    auto send = [output_fd](const std::string& bytes) {
+        if (write(output_fd, bytes.data(), bytes.size()) != static_cast<ssize_t>(bytes.size()))
+            std::printf("fake_lab: write to the output descriptor: %s\n", std::strerror(errno));
+    };
     if (mode == "quick") {
         return 0;
+    } else if (mode == "stream_garbage") {
+        send("garbage instead of a record\n");
+    } else if (mode == "stream_outside") {
+        send("OUTPUT 8 /etc/planted.txt\nplanted\n");
+    } else if (mode == "stream_flood") {
+        const std::string chunk(1 << 20, 'x');
+        for (long i = 0;; ++i)
+            send("OUTPUT " + std::to_string(chunk.size()) + " " + out + "/flood" +
+                 std::to_string(i) + ".bin\n" + chunk);
+    } else if (mode == "stream_cut") {
+        const std::string name = renders.empty() ? "none" : renders[0].value("name", "");
+        send("OUTPUT 1000 " + out + "/" + name + ".pam\nP7\nWIDTH 64\n");
     } else if (mode == "segv") {
         std::signal(SIGSEGV, SIG_DFL);  // not a sanitizer's report: the plain signal
         std::raise(SIGSEGV);
@@ -445,7 +466,9 @@ int main(int argc, char** argv) {
     // several labs), and --backend.
     std::vector<std::pair<std::string, std::string>> pairs;
     std::string backend;
+    int output_fd = -1;
     for (int i = 1; i + 1 < argc; ++i) {
+        if (std::string(argv[i]) == "--output-fd") output_fd = std::atoi(argv[i + 1]);
         if (std::string(argv[i]) == "--job") pairs.push_back({argv[i + 1], ""});
         if (std::string(argv[i]) == "--out" && !pairs.empty()) pairs.back().second = argv[i + 1];
         if (std::string(argv[i]) == "--backend") backend = argv[i + 1];
@@ -485,6 +508,6 @@ int main(int argc, char** argv) {
     // grades them, the target misbehaving, and, when it returns 0, the labs
     // after it.
     if (before.args.size() > 2) run_real(before.argv().data());
-    const int rc = misbehave(mode, job, out, target.argv());
+    const int rc = misbehave(mode, job, out, target.argv(), output_fd);
     return rc == 0 && after.args.size() > 2 ? run_real(after.argv().data()) : rc;
 }

@@ -55,6 +55,26 @@ TEST_CASE(
          {{"frame / image", "frame.pam is not a regular file"},
           {"frame2 / probe", "frame2.pam is not a regular file"},
           {"frame / stat", "exited normally without writing frame.stats.json"}}},
+        // What it sends on its output descriptor instead of files.
+        {"stream_garbage",
+         "sent something that is not an output record (a line \"OUTPUT SIZE PATH\") on its "
+         "output descriptor",
+         {"not an output record"},
+         {}},
+        {"stream_outside",
+         "sent an output outside its work directory ('/etc/planted.txt')",
+         {"outside its work directory"},
+         {}},
+        {"stream_flood",
+         "sent more than 256 MiB of outputs on its output descriptor, the limit of its work "
+         "directory",
+         {"256 MiB of outputs"},
+         {}},
+        {"stream_cut",
+         "ok",
+         {},
+         {{"frame / image", "exited normally without writing frame.pam"},
+          {"frame2 / image", "exited normally without writing frame2.pam"}}},
     };
     for (const Misbehaviour& m : cases) {
         CAPTURE(m.mode);
