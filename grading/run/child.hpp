@@ -82,7 +82,7 @@ class StreamedOutputs {
 public:
     explicit StreamedOutputs(std::string dir) : dir_(std::move(dir)) {}
     // Reads until the pipe is empty (`all`) or for at most 16 MiB; false
-    // with `why` when the child must be stopped.
+    // with `why` when the child must be stopped, and then never reads again.
     bool read(int fd, const ChildLimits& limits, bool all, std::string& why);
     bool eof() const { return eof_; }
     // Bytes of the records begun since the last lab_began(): its share of the
@@ -94,6 +94,7 @@ public:
     std::map<std::string, std::string> take(const std::string& sub);
 
 private:
+    bool fill(int fd, const ChildLimits& limits, bool all, std::string& why);
     bool header(const ChildLimits& limits, std::string& why);
     std::string dir_;
     std::map<std::string, std::string> files_;  // by PATH

@@ -65,13 +65,22 @@ bool StreamedOutputs::header(const ChildLimits& limits, std::string& why) {
     got_ = std::min(pending_.size(), body_->size());
     std::memcpy(body_->data(), pending_.data(), got_);
     pending_.erase(0, got_);
+    if (got_ == body_->size()) body_ = nullptr;  // complete already
     return true;
 }
 
 bool StreamedOutputs::read(int fd, const ChildLimits& limits, bool all, std::string& why) {
+    if (fill(fd, limits, all, why)) return true;
+    // The child is stopped: nothing more is read, and what it sent stays.
+    eof_ = true;
+    if (body_) files_.erase(body_path_);
+    body_ = nullptr;
+    return false;
+}
+
+bool StreamedOutputs::fill(int fd, const ChildLimits& limits, bool all, std::string& why) {
     size_t budget = 16 * kMiB;
     while (!eof_ && (all || budget > 0)) {
-        if (body_ && got_ == body_->size()) body_ = nullptr;  // a record complete
         if (!body_ && pending_.find('\n') != std::string::npos) {
             if (!header(limits, why)) return false;
             continue;
@@ -93,15 +102,16 @@ bool StreamedOutputs::read(int fd, const ChildLimits& limits, bool all, std::str
         if (n == 0) {
             eof_ = true;
             // A record cut short: as if that file was never written.
-            if (body_ && got_ < body_->size()) files_.erase(body_path_);
+            if (body_) files_.erase(body_path_);
             body_ = nullptr;
             return true;
         }
         budget -= std::min(budget, static_cast<size_t>(n));
-        if (body_)
-            got_ += static_cast<size_t>(n);
-        else
+        if (!body_) {
             pending_.append(chunk, static_cast<size_t>(n));
+        } else if ((got_ += static_cast<size_t>(n)) == body_->size()) {
+            body_ = nullptr;  // a record complete
+        }
     }
     return true;
 }
@@ -112,7 +122,8 @@ std::map<std::string, std::string> StreamedOutputs::take(const std::string& sub)
     for (auto it = files_.lower_bound(prefix);
          it != files_.end() && it->first.compare(0, prefix.size(), prefix) == 0;) {
         const std::string name = it->first.substr(prefix.size());
-        // Not a record still being filled, nor one of a lab folder below.
+        // Not a record still being filled (body_ is one only until it is
+        // complete), nor one of a lab folder below.
         if (name.find('/') != std::string::npos || &it->second == body_) {
             ++it;
             continue;

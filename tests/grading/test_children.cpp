@@ -2,6 +2,7 @@
 // `course grade --jobs 2`: after each child, run_child() kills whatever no
 // running lab started; a child that another thread is starting at that
 // moment is a running lab, never a stray. Real processes, no GL.
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -198,4 +199,99 @@ TEST_CASE("children: a zombie is not a stray: course reaps its own and leaves an
     close(z.release[1]);
     waitpid(z.parent, nullptr, 0);
     waitpid(z.zombie, nullptr, 0);  // reparented to this process (a subreaper) or init
+}
+
+namespace {
+
+// Writes `parts` into a pipe one at a time, each followed by a read of all
+// that is there, as course's watcher does; then closes it and reads its end.
+struct Fed {
+    bool ok = true;
+    std::string why;
+};
+Fed feed(grading::StreamedOutputs& streamed, const std::vector<std::string>& parts,
+         const grading::ChildLimits& limits = {}) {
+    int fds[2];
+    REQUIRE(pipe(fds) == 0);
+    fcntl(fds[0], F_SETFL, O_NONBLOCK);
+    Fed fed;
+    for (const std::string& part : parts) {
+        REQUIRE(write(fds[1], part.data(), part.size()) == static_cast<ssize_t>(part.size()));
+        if (fed.ok) fed.ok = streamed.read(fds[0], limits, true, fed.why);
+    }
+    close(fds[1]);
+    if (fed.ok) fed.ok = streamed.read(fds[0], limits, true, fed.why);
+    close(fds[0]);
+    return fed;
+}
+
+}  // namespace
+
+TEST_CASE("children: outputs sent on the output descriptor are taken apart, record by record") {
+    const std::string dir = "/tmp/course-x";
+    grading::StreamedOutputs streamed(dir);
+    // Pieces cut anywhere: inside a header, inside a body, two records in one.
+    const Fed fed = feed(streamed, {"OUTPUT 5 " + dir + "/a.p", "am\nhel",
+                                    "lo"
+                                    "OUTPUT 0 " +
+                                        dir + "/empty.txt\nOUTPUT 3 " + dir + "/0/b.json\n{}\n",
+                                    "OUTPUT 9 " + dir + "/cut.pam\nshort"});
+    REQUIRE_MESSAGE(fed.ok, fed.why);
+    CHECK(streamed.eof());
+    const std::map<std::string, std::string> top = streamed.take(dir);
+    CHECK(top == std::map<std::string, std::string>{{"a.pam", "hello"}, {"empty.txt", ""}});
+    CHECK(streamed.take(dir + "/0") == std::map<std::string, std::string>{{"b.json", "{}\n"}});
+    CHECK(streamed.take(dir).empty());  // taken once; the record cut short never was one
+    // Each record is at least 4 KiB of the work directory's cap.
+    CHECK(streamed.lab_bytes() == 4 * 4096);  // the one cut short too
+}
+
+TEST_CASE(
+    "children: anything on the output descriptor but a record of the work directory stops the "
+    "child") {
+    const std::string dir = "/tmp/course-x";
+    grading::ChildLimits small;
+    small.file_cap = 100;
+    small.work_dir_cap = 10000;
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"garbage\n", "not an output record (a line \"OUTPUT SIZE PATH\")"},
+        {"OUTPUT x " + dir + "/a\n", "not an output record"},
+        {"OUTPUT 1 /etc/a\nx", "outside its work directory ('/etc/a')"},
+        {"OUTPUT 1 " + dir + "/../a\nx", "outside its work directory"},
+        {"OUTPUT 1 " + dir + "/x/a\nx", "outside its work directory"},
+        {"OUTPUT 1 " + dir + "x/a\nx", "outside its work directory"},
+        {"OUTPUT 101 " + dir + "/a\n", "101 bytes, '" + dir + "/a': over the 0 MiB limit per file"},
+        {"OUTPUT 9 " + dir + "/a\n123456789OUTPUT 9 " + dir + "/b\n123456789OUTPUT 9 " + dir +
+             "/c\n",
+         "more than 0 MiB of outputs on its output descriptor, the limit of its work directory"},
+        {std::string(5000, 'x'), "no end of line in 4096 bytes"},
+    };
+    for (const auto& [sent, why] : cases) {
+        CAPTURE(sent.substr(0, 80));
+        grading::StreamedOutputs streamed(dir);
+        const Fed fed = feed(streamed, {sent}, small);
+        CHECK_FALSE(fed.ok);
+        CHECK_MESSAGE(fed.why.find(why) != std::string::npos, fed.why);
+        CHECK(streamed.eof());  // never read again
+    }
+}
+
+TEST_CASE("children: a child's descriptor 3 is the output pipe, and what it sends is kept") {
+    const std::string dir = work_dir();
+    grading::StreamedOutputs streamed(dir);
+    grading::ChildLimits limits;
+    limits.timeout_seconds = 20;
+    // A megabyte, past any pipe's default capacity, then a small record.
+    const std::string script =
+        "head -c 1048576 /dev/zero > big.bin; "
+        "{ printf 'OUTPUT 1048576 %s/big.pam\\n' \"$PWD\"; cat big.bin; "
+        "printf 'OUTPUT 2 %s/s.json\\n{}' \"$PWD\"; } >&3; rm big.bin";
+    const grading::ChildRun run =
+        grading::run_child({"/bin/sh", "-c", script}, dir, limits, nullptr, {}, nullptr, &streamed);
+    const std::string how = run.status.text() + "\n" + run.log;
+    REQUIRE_MESSAGE(run.ok(), how);
+    std::map<std::string, std::string> got = streamed.take(dir);
+    REQUIRE(got.size() == 2);
+    CHECK(got["big.pam"] == std::string(1 << 20, '\0'));
+    CHECK(got["s.json"] == "{}");
 }
