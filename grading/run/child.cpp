@@ -1,9 +1,7 @@
 #include "grading/run/child.hpp"
 
 #include <fcntl.h>
-#include <grp.h>
 #include <poll.h>
-#include <pwd.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -19,10 +17,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <thread>
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/run/run_as.hpp"
 #include "grading/sandbox/isolation.hpp"
 #include "grading/sandbox/sandbox.hpp"
 
@@ -52,62 +52,12 @@ namespace {
     _exit(126);
 }
 
-void switch_user(const RunAsUser& user) {
-    // Groups first: after setuid the process may no longer change them.
-    if (setgroups(user.groups.size(), user.groups.data()) != 0) child_fail("setgroups");
-    if (setgid(user.gid) != 0) child_fail("setgid");
-    if (setuid(user.uid) != 0) child_fail("setuid");
-    if (getuid() != user.uid || geteuid() != user.uid || getegid() != user.gid)
-        child_fail("setuid check");
-}
-
 void set_limit(int resource, rlim_t value, const char* name) {
     rlimit r{value, value};
     if (setrlimit(resource, &r) != 0) child_fail(name);
 }
 
 }  // namespace
-
-RunAsUser lookup_user(const std::string& name) {
-    if (geteuid() != 0)
-        throw fw::UsageError(
-            "--run-as " + name + " needs root, but course runs as uid " +
-            std::to_string(geteuid()) +
-            ": run course as root, or leave out --run-as to run the child as yourself");
-    struct passwd pw, *found = nullptr;
-    std::vector<char> buf(16384);
-    if (getpwnam_r(name.c_str(), &pw, buf.data(), buf.size(), &found) != 0 || !found)
-        throw fw::UsageError("--run-as: no user '" + name +
-                             "' on this machine; name an existing unprivileged user, e.g. nobody");
-    if (pw.pw_uid == 0)
-        throw fw::UsageError("--run-as " + name +
-                             ": that user is root, which would give the child "
-                             "root's rights; name an unprivileged user, e.g. nobody");
-    RunAsUser user{name, pw.pw_uid, pw.pw_gid, {}};
-    int count = 64;
-    user.groups.resize(static_cast<size_t>(count));
-    while (getgrouplist(name.c_str(), pw.pw_gid, user.groups.data(), &count) < 0)
-        user.groups.resize(static_cast<size_t>(count));
-    user.groups.resize(static_cast<size_t>(count));
-    return user;
-}
-
-bool user_can_access(const RunAsUser& user, const std::string& path, int mode) {
-    pid_t pid = fork();
-    if (pid < 0)
-        throw fw::Error(std::string("cannot fork to test access: ") + std::strerror(errno));
-    if (pid == 0) {
-        switch_user(user);
-        _exit(access(path.c_str(), mode) == 0 ? 0 : 1);
-    }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (!WIFEXITED(status) || WEXITSTATUS(status) > 1)
-        throw fw::Error("cannot test what user '" + user.name + "' may do with '" + path +
-                        "': switching to that user failed");
-    return WEXITSTATUS(status) == 0;
-}
 
 namespace {
 
@@ -190,7 +140,7 @@ struct ChildStart {
     if (c.user) {
         // Counted per user at each fork: a fork bomb stops here.
         set_limit(RLIMIT_NPROC, kRunAsProcesses, "RLIMIT_NPROC");
-        switch_user(*c.user);
+        switch_user(*c.user, child_fail);
     }
     // Killed with course, or with the namespace's init (set after setuid,
     // which clears it).
@@ -343,6 +293,33 @@ private:
     double next_size_check_ = 0.25, drain_until_ = 0.0;
 };
 
+// A pipe from a child: course keeps the read end (non-blocking, once
+// keep_read_end() has closed its copy of the write end); both ends are
+// closed however run_child() ends.
+struct Pipe {
+    int read_end = -1, write_end = -1;
+    // `capacity`: bytes it holds (F_SETPIPE_SZ), where the system allows it.
+    explicit Pipe(int capacity = 0) {
+        int fds[2];
+        if (pipe2(fds, O_CLOEXEC) != 0)
+            throw fw::Error(std::string("pipe: ") + std::strerror(errno));
+        read_end = fds[0];
+        write_end = fds[1];
+        if (capacity > 0) fcntl(write_end, F_SETPIPE_SZ, capacity);
+    }
+    ~Pipe() {
+        for (const int fd : {read_end, write_end})
+            if (fd >= 0) close(fd);
+    }
+    Pipe(const Pipe&) = delete;
+    Pipe& operator=(const Pipe&) = delete;
+    void keep_read_end() {
+        close(write_end);
+        write_end = -1;
+        fcntl(read_end, F_SETFL, O_NONBLOCK);
+    }
+};
+
 // How a child that was not killed ended, as ChildRun::status says it.
 LabStatus exit_status(int wait_status, const ChildStart& c) {
     if (WIFSIGNALED(wait_status)) {
@@ -375,38 +352,26 @@ ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
             std::make_unique<LabCgroup>(*limits.cgroups, limits.resident_cap, limits.processes_cap);
         start.cgroup_fds = &cgroup->join_fds();
     }
-    int fds[2];
-    if (pipe2(fds, O_CLOEXEC) != 0) throw fw::Error(std::string("pipe: ") + std::strerror(errno));
+    Pipe out;
+    start.out = out.write_end;
     start.devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
-    start.out = fds[1];
-    int outputs[2] = {-1, -1};
+    std::optional<Pipe> outputs;
     if (streamed) {
-        if (pipe2(outputs, O_CLOEXEC) != 0) {
-            close(fds[0]);
-            close(fds[1]);
-            throw fw::Error(std::string("pipe: ") + std::strerror(errno));
-        }
-        // A frame in one write where the system allows it (else 64 KiB at a time).
-        fcntl(outputs[1], F_SETPIPE_SZ, 1 << 20);
-        start.outputs = outputs[1];
+        outputs.emplace(1 << 20);  // a frame in one write, where the system allows it
+        start.outputs = outputs->write_end;
     }
     const auto started = ChildWatch::Clock::now();
     const pid_t pid = fork_lab();
     if (pid < 0) throw fw::Error(std::string("cannot fork the lab child: ") + std::strerror(errno));
     if (pid == 0) exec_child(start);
     setpgid(pid, pid);  // also here, so that killpg works before the child gets to it
-    close(fds[1]);
     if (start.devnull >= 0) close(start.devnull);
-    fcntl(fds[0], F_SETFL, O_NONBLOCK);
-    if (streamed) {
-        close(outputs[1]);
-        fcntl(outputs[0], F_SETFL, O_NONBLOCK);
-    }
+    out.keep_read_end();
+    if (outputs) outputs->keep_read_end();
 
-    ChildWatch watch(pid, fds[0], start, started, marks, streamed, outputs[0]);
+    ChildWatch watch(pid, out.read_end, start, started, marks, streamed,
+                     outputs ? outputs->read_end : -1);
     watch.watch();
-    close(fds[0]);
-    if (streamed) close(outputs[0]);
     ChildRun run = std::move(watch.run());
     if (!watch.killed()) run.status = exit_status(watch.wait_status(), start);
     lab_ended(pid);  // watch() has reaped it
