@@ -1,7 +1,7 @@
 // The lab API. A lab is a class with init() and draw() plus its parameter
 // declaration, registered with one line:
 //
-//   FW_LAB(PipelineLab)   // at the end of labs/00_pipeline/pipeline.cpp
+//   FW_LAB(PipelineLab)   // at the end of labs/00_pipeline/pipeline_lab.cpp
 //
 // The lab's number, id and folder come from its folder's name, which the
 // build passes to every file of the lab as FW_LAB_DIR: labs/02_robot_arm/

@@ -1,11 +1,12 @@
 // Lab 9's uniform block: the std140 rules as a function (std140_place, a
 // student part the grader checks), the C++ struct that mirrors the block
 // SceneBlock of shaders/09_buffers/sphere.vert byte for byte, and what
-// fills it (pack_scene, a student part), in block.cpp.
+// fills it (pack_scene, a student part), in block.cpp; what the block scene
+// draws and reports with them, in block_scene.cpp.
 #pragma once
 
 #include <glm/glm.hpp>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <vector>
 
 #include "framework/gl.hpp"

@@ -1,7 +1,8 @@
 // The repository's layout, read from its files (no build, no GL): grading's rooms include only
 // rooms below them, framework and grading headers include no cycle, every repository path and
-// docs section that a comment or a Markdown page cites exists, and functions and files keep to
-// the sizes of docs/conventions.md.
+// docs section that a comment or a Markdown page cites exists, functions and files keep to
+// the sizes of docs/conventions.md; and a lab's files with student parts neither register the
+// lab nor include nlohmann/json.hpp.
 //
 // The files read are those of framework/ grading/ labs/ shaders/ tests/ bench/ scripts/ docs/
 // and README.md that git lists or would add (build*/ and third_party/ left out). Read are:
@@ -606,6 +607,41 @@ std::vector<Problem> size_problems(const Repo& repo, size_t& functions) {
     return out;
 }
 
+// Whether `file` includes <nlohmann/json.hpp>, itself or through the quoted
+// includes it finds beside it or from the repository's root.
+bool includes_json(const fs::path& root, const fs::path& file, std::set<fs::path>& seen) {
+    if (!seen.insert(file).second) return false;
+    for (const std::string& line : read_lines(file))
+        if (line.find("#include <nlohmann/json.hpp>") != std::string::npos) return true;
+    for (const auto& [line, name] : quoted_includes(file))
+        for (const fs::path& at : {file.parent_path() / name, root / name})
+            if (fs::is_regular_file(at) && includes_json(root, at, seen)) return true;
+    return false;
+}
+
+// A lab's file with a student part is compiled again for every submission
+// an autograder builds; the lab's class and JSON belong in files without one.
+std::vector<Problem> student_file_problems(const Repo& repo, size_t& student_files) {
+    static const std::regex lab_file("labs/[0-9][0-9]_[a-z0-9_]+/[^/]+\\.cpp");
+    std::vector<Problem> out;
+    for (const std::string& f : repo.files) {
+        if (!std::regex_match(f, lab_file)) continue;
+        const std::string text = fw::test::read_text((repo.root / f).string());
+        if (text.find("// BEGIN SOLUTION") == std::string::npos) continue;
+        ++student_files;
+        auto problem = [&](const std::string& what) {
+            out.push_back({f, what + ", which every submission's build then compiles again: "
+                                     "move it to a file of the lab without a student part "
+                                     "(docs/conventions.md, Student parts)"});
+        };
+        if (text.find("FW_LAB(") != std::string::npos) problem("it registers the lab (FW_LAB)");
+        std::set<fs::path> seen;
+        if (includes_json(repo.root, repo.root / f, seen))
+            problem("it includes nlohmann/json.hpp, itself or through a header");
+    }
+    return out;
+}
+
 const Repo& repo() {
     static const Repo r = read_repo(fw::test::source_dir());
     return r;
@@ -654,6 +690,14 @@ TEST_CASE("functions and files keep to the sizes of docs/conventions.md") {
     const std::vector<Problem> problems = size_problems(repo(), functions);
     MESSAGE(functions << " functions of framework/, grading/ and the labs measured");
     CHECK(functions > 300);
+    report(problems);
+}
+
+TEST_CASE("a lab's files with student parts hold neither the lab's class nor JSON") {
+    size_t student_files = 0;
+    const std::vector<Problem> problems = student_file_problems(repo(), student_files);
+    MESSAGE(student_files << " lab files with student parts");
+    CHECK(student_files > 10);
     report(problems);
 }
 

@@ -134,8 +134,10 @@ TEST_CASE("new lab: a copy of lab 0 as labs/90_warmup lists, renders, grades, re
     fs::remove_all(release);
     CHECK(run(release_command).exit_code == 0);
     const std::string student = read_text((release / "labs/90_warmup/pipeline.cpp").string());
-    CHECK(student.find("FW_LAB(PipelineLab)") != std::string::npos);
+    CHECK(student.find("TODO") != std::string::npos);
     CHECK(student.find("BEGIN SOLUTION") == std::string::npos);
+    CHECK(read_text((release / "labs/90_warmup/pipeline_lab.cpp").string())
+              .find("FW_LAB(PipelineLab)") != std::string::npos);
     CHECK(fs::exists(release / "shaders/90_warmup/pipeline.vert"));
 
     // Passes its own tests (those found in labs/90_warmup/tests/).
