@@ -1,19 +1,6 @@
-// Lab 0 `pipeline`: what the pipeline does to triangles (warm-up).
-//
-// Teaches: how a vertex array describes the vertex layout; the depth test
-// versus draw order; an indexed face set versus the flat vertex list it
-// expands to; how primitive assembly reads one vertex list in seven modes;
-// front faces, back faces and culling.
-// Lecture: depth buffer and draw order, indexed face sets, primitive types
-// (points, lines, strips, fans), face orientation and back-face culling.
-// GL: glBindVertexArray, glBindBuffer, glVertexAttribPointer,
-// glEnableVertexAttribArray, glDrawArrays, glDrawElements, glEnable/glDisable,
-// glDepthFunc, glFrontFace, glCullFace, gl_PointSize with GL_PROGRAM_POINT_SIZE.
-// Student parts (marked TODO): describe_vertex_layout(), draw_face_set(),
-// set_depth_test() and set_culling() below, expand_indices() in meshes.cpp,
-// and the pass-through in shaders/00_pipeline/pipeline.vert. The lab itself
-// (its scenes drawn with these, and what its frames report) is in
-// pipeline_lab.cpp.
+// Lab 0's drawing steps, the student parts (marked TODO) of the lab in
+// pipeline_lab.cpp: describe_vertex_layout(), draw_face_set(),
+// set_depth_test() and set_culling().
 #include "pipeline.hpp"
 
 #include <cstddef>

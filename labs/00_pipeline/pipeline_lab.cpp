@@ -1,5 +1,17 @@
-// Lab 0 `pipeline`: the lab itself, with the student parts of pipeline.cpp:
-// its vertex arrays, its four scenes drawn, and what each frame reports.
+// Lab 0 `pipeline`: what the pipeline does to triangles (warm-up).
+//
+// Teaches: how a vertex array describes the vertex layout; the depth test
+// versus draw order; an indexed face set versus the flat vertex list it
+// expands to; how primitive assembly reads one vertex list in seven modes;
+// front faces, back faces and culling.
+// Lecture: depth buffer and draw order, indexed face sets, primitive types
+// (points, lines, strips, fans), face orientation and back-face culling.
+// GL: glBindVertexArray, glBindBuffer, glVertexAttribPointer,
+// glEnableVertexAttribArray, glDrawArrays, glDrawElements, glEnable/glDisable,
+// glDepthFunc, glFrontFace, glCullFace, gl_PointSize with GL_PROGRAM_POINT_SIZE.
+// Student parts (marked TODO): describe_vertex_layout(), draw_face_set(),
+// set_depth_test() and set_culling() in pipeline.cpp, expand_indices() in
+// meshes.cpp, and the pass-through in shaders/00_pipeline/pipeline.vert.
 #include <cstddef>
 #include <cstdint>
 #include <utility>

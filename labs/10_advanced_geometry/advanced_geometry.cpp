@@ -1,27 +1,5 @@
-// Lab 10 `advanced-geometry`: one draw, many results.
-//
-// Teaches: instancing (one draw of many copies, each placed by gl_InstanceID
-// and coloured by an attribute that advances once per instance); a user clip
-// plane (gl_ClipDistance); layered rendering (one draw into all six faces of
-// a cube map, the face chosen by the geometry shader's gl_Layer, each with
-// its own view); adjacency primitives (a geometry shader that sees a
-// triangle's neighbours and draws a mesh's silhouette).
-// Lecture: the vertex shader's built-ins gl_InstanceID and gl_ClipDistance;
-// the geometry stage's inputs (triangles_adjacency: 6 vertices) and outputs
-// (line_strip, gl_Layer, gl_ViewportIndex); layered rendering into a cube
-// map's 6 layers; the primitive types GL_TRIANGLES_ADJACENCY.
-// GL: glBindBuffer, glVertexAttribPointer, glEnableVertexAttribArray,
-// glVertexAttribDivisor, glDrawElementsInstanced, glDrawArraysInstanced;
-// glEnable and glDisable of GL_CLIP_DISTANCE0; glBindFramebuffer and
-// glViewport around the draw into a fw::CubeFramebuffer (a cube map attached
-// whole, as layers, by the framework), a samplerCube; glDrawElements with
-// GL_TRIANGLES_ADJACENCY; glBindVertexArray, glDrawArrays, glDrawElements.
-// Student parts (marked TODO): draw_instances() in instances.cpp,
-// draw_clipped() below, cube_face_view() in layers.cpp, adjacency_indices()
-// in silhouette.cpp; the instance's cell in shaders/10_advanced_geometry/
-// grid.vert, the clip distance in sphere.vert, the six faces in layers.geom
-// and the outline in silhouette.geom. The lab itself (its scenes drawn with
-// these, and what its frames report) is in advanced_geometry_lab.cpp.
+// Lab 10's clipped draw, draw_clipped(): a student part (marked TODO) of the
+// lab in advanced_geometry_lab.cpp.
 #include "advanced_geometry.hpp"
 
 #include <cmath>
