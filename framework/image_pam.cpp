@@ -45,18 +45,13 @@ std::string encode_pam(const Image& img) {
     return bytes;
 }
 
-// The same bytes as encode_pam, written from the image's own rows (the top
-// one first): a grading child writes a frame without copying it first.
 void write_pam(const std::string& path, const Image& img) {
-    check_encodable(img);
+    const std::string bytes = encode_pam(img);
     std::ofstream out(path, std::ios::binary);
     if (!out)
         throw Error("cannot write PAM '" + path + "': " + std::strerror(errno) +
                     "; check that its directory exists and is writable");
-    out << pam_header(img);
-    const auto row = static_cast<std::streamsize>(img.width) * 4;
-    for (int y = img.height - 1; y >= 0; --y)
-        out.write(reinterpret_cast<const char*>(&img.at(0, y)), row);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.close();
     if (!out) throw Error("cannot write PAM '" + path + "': write failed (disk full?)");
 }
