@@ -60,8 +60,10 @@ void prepare(const std::string& out, const std::vector<LabData>& all,
     fs::create_directories(out);
     if (user && created) set_owner_mode(out, 0755);
     for (const LabData& lab : graded) {
+        // Kept from a grading before, its files written again in place
+        // (judge/report_files.hpp); anything but a folder there is replaced.
         const std::string dir = out + "/" + lab.id;
-        fs::remove_all(dir);
+        if (!fs::is_directory(fs::symlink_status(dir))) fs::remove_all(dir);
         fs::create_directories(dir);
         if (user) set_owner_mode(dir, 0700);
     }

@@ -11,36 +11,37 @@
 #include "framework/error.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/judge_buffer.hpp"
+#include "grading/judge/report_files.hpp"
 
 namespace grading {
-
-// Course's own file `from` (a reference) into the report as `to`.
-inline void copy_into_report(const std::string& from, const std::string& to) {
-    std::error_code ec;
-    std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing, ec);
-    if (ec) throw fw::Error("cannot copy " + from + " into the report: " + ec.message());
-}
 
 // One checkpoint's frame, each output read once for all its checks.
 class Frame {
 public:
-    Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& lab)
-        : outputs_(outputs), plan_(plan) {
+    // The frame's PNG goes into the report folder `out_dir`. A name it
+    // left there shared with the reference's copy (a hard link) is dropped
+    // first, so that copying the reference again writes that file in place.
+    Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& lab,
+          const std::string& out_dir)
+        : outputs_(outputs), plan_(plan), out_dir_(out_dir) {
+        const std::string name = lab + "/" + plan.checkpoint + ".png";
+        unshare_report_file(out_dir + "/" + name);
         has_color_ = read_rendered(outputs, plan, color_, color_why_);
-        if (has_color_) rendered_ = lab + "/" + plan.checkpoint + ".png";
+        if (has_color_) rendered_ = name;
     }
     const std::string& rendered() const { return rendered_; }
 
     // An image check found the frame pixel for pixel equal to the reference
-    // in `path`: publish() copies that file instead of encoding the frame.
+    // whose copy in the report is `path`: publish() makes the frame's PNG a
+    // second name of that file instead of encoding the frame.
     void same_pixels_as(const std::string& path) { same_as_ = path; }
 
     // The one PNG of the frame, for the reports, once its checks are done
     // (on the grading worker's thread, so --jobs spreads the encoding).
-    void publish(const std::string& out_dir) const {
+    void publish() const {
         if (!has_color_) return;
-        const std::string to = out_dir + "/" + rendered_;
-        same_as_.empty() ? fw::write_png(to, color_) : copy_into_report(same_as_, to);
+        const std::string to = out_dir_ + "/" + rendered_;
+        same_as_.empty() ? write_report_png(to, color_) : link_in_report(same_as_, to);
     }
 
     const fw::Image* color(std::string& why) const {
@@ -105,6 +106,7 @@ public:
 private:
     const ChildOutputs& outputs_;
     RenderPlan plan_;
+    std::string out_dir_;
     bool has_color_ = false;
     fw::Image color_;
     std::string color_why_, rendered_, same_as_;

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "framework/error.hpp"
@@ -27,6 +28,7 @@ namespace grading {
 namespace {
 
 using nlohmann::json;
+namespace fs = std::filesystem;
 
 std::string num(double v) { return fw::number_text(v, 7); }
 
@@ -80,18 +82,18 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
     fw::CompareOptions verdict_only = opt;
     verdict_only.difference = false;
     fw::CompareResult c = fw::compare_images(*image, reference, verdict_only);
+    r.expected = lab.id + "/" + cp.name + ".expected.png";
+    copy_into_report(ref_path, out_dir + "/" + r.expected);  // not encoded again
     if (image->width == reference.width && image->height == reference.height &&
         std::memcmp(image->pixels.data(), reference.pixels.data(),
                     image->pixels.size() * sizeof(fw::Rgba8)) == 0)
-        frame.same_pixels_as(ref_path);
-    r.expected = lab.id + "/" + cp.name + ".expected.png";
-    copy_into_report(ref_path, out_dir + "/" + r.expected);  // not encoded again
+        frame.same_pixels_as(out_dir + "/" + r.expected);
     // Where no pixel is beyond the tolerance, the difference image would be
     // the rendered frame in grey: none is written.
     if (!c.size_mismatch && c.failed_pixels > 0) {
         r.difference = lab.id + "/" + cp.name + ".diff.png";
-        fw::write_png(out_dir + "/" + r.difference,
-                      fw::compare_images(*image, reference, opt).difference);
+        write_report_png(out_dir + "/" + r.difference,
+                         fw::compare_images(*image, reference, opt).difference);
     }
     std::string where = c.passed ? "" : describe_difference(*image, reference, c);
     if (!c.passed && !c.size_mismatch)
@@ -247,12 +249,13 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
     // report on its own: the checkpoints go to `threads` threads.
     const std::vector<fw::Checkpoint>& checkpoints = lab.file.checkpoints;
     std::vector<std::vector<CheckResult>> by_checkpoint(checkpoints.size());
+    std::vector<std::string> rendered(checkpoints.size());
     ReferenceImages references(lab);  // other checkpoints' images, for a failed frame
     parallel_for(checkpoints.size(), threads, [&](size_t k) {
         const fw::Checkpoint& cp = checkpoints[k];
         std::optional<Frame> frame;
         auto r = renders.find(cp.name);
-        if (r != renders.end()) frame.emplace(outputs, *r->second, lab.id);
+        if (r != renders.end()) frame.emplace(outputs, *r->second, lab.id, out_dir);
         const std::vector<Check>& checks = lab.checks.at(k);
         const Visibility visibility = visibility_named(cp.visibility);
         for (size_t i = 0; i < checks.size(); ++i) {
@@ -289,11 +292,26 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
             }
             by_checkpoint[k].push_back(std::move(result));
         }
-        if (frame) frame->publish(out_dir);
+        if (frame) {
+            frame->publish();
+            rendered[k] = frame->rendered();
+        }
     });
+    // What this grading wrote into the lab's folder stays; what an earlier
+    // one left there beside it goes.
+    std::set<std::string> written;
+    auto keep = [&](const std::string& path) {
+        if (!path.empty()) written.insert(fs::path(path).filename().string());
+    };
+    for (const std::string& path : rendered) keep(path);
     std::vector<CheckResult> results;
     for (std::vector<CheckResult>& checks : by_checkpoint)
-        for (CheckResult& c : checks) results.push_back(std::move(c));
+        for (CheckResult& c : checks) {
+            keep(c.expected);
+            keep(c.difference);
+            results.push_back(std::move(c));
+        }
+    keep_only(out_dir + "/" + lab.id, written);
     return results;
 }
 

@@ -33,11 +33,10 @@ struct Graded {
     double seconds = 0.0;
 };
 
-// `env... [wrapper] course grade ARGS --out OUT`, then results.json. The
-// wrapper is a command line that runs the rest (a sandbox profile's).
-inline Graded grade(const std::string& env, const std::string& args, const std::string& out,
-                    const std::string& wrapper = "") {
-    fs::remove_all(out);
+// `env... [wrapper] course grade ARGS --out OUT` into whatever OUT holds
+// already, then results.json.
+inline Graded grade_into(const std::string& env, const std::string& args, const std::string& out,
+                         const std::string& wrapper = "") {
     const auto start = std::chrono::steady_clock::now();
     fw::test::CommandResult r = fw::test::run_command(env + " " + wrapper + " " + course() +
                                                       " grade " + args + " --out " + out);
@@ -50,6 +49,14 @@ inline Graded grade(const std::string& env, const std::string& args, const std::
     std::ifstream in(out + "/results.json");
     if (in) g.results = json::parse(in, nullptr, false);
     return g;
+}
+
+// grade_into a fresh OUT. The wrapper is a command line that runs the rest
+// (a sandbox profile's).
+inline Graded grade(const std::string& env, const std::string& args, const std::string& out,
+                    const std::string& wrapper = "") {
+    fs::remove_all(out);
+    return grade_into(env, args, out, wrapper);
 }
 
 // The rows of a summary.txt, each as its words: "lab  score  checks

@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <regex>
 #include <set>
 
+#include "framework/image.hpp"
 #include "tests/grading/grade_support.hpp"
 
 using namespace grade_test;
@@ -91,6 +93,74 @@ TEST_CASE("course grade: a difference image for each frame whose pixels differ")
     CHECK(g.exit_code == 1);
     REQUIRE(g.results.is_object());
     CHECK(check_report_images(g.results, out, "pipeline") > 0);
+}
+
+TEST_CASE("course grade again into the same folder: files written in place, nothing left over") {
+    const std::string out = fw::test::out_dir() + "/again";
+    Graded first = grade("COURSE_SEED=1234", "pipeline", out);
+    REQUIRE(first.exit_code == 0);
+    const std::string lab_dir = out + "/pipeline";
+    // Whether this filesystem has hard links (else a frame equal to its
+    // reference is a copy of it).
+    const bool links =
+        ::link((lab_dir + "/../results.json").c_str(), (out + "/probe").c_str()) == 0;
+    fs::remove(out + "/probe");
+    struct Expected {
+        std::string bytes;
+        ino_t inode;
+    };
+    std::map<std::string, Expected> expected;  // by the rendered frame's path
+    auto inode = [](const std::string& path) {
+        struct stat st;
+        REQUIRE(::stat(path.c_str(), &st) == 0);
+        return st.st_ino;
+    };
+    for (const fs::directory_entry& e : fs::directory_iterator(lab_dir)) {
+        const std::string name = e.path().string();
+        const size_t at = name.rfind(".expected.png");
+        if (at == std::string::npos) continue;
+        const std::string rendered = name.substr(0, at) + ".png";
+        CAPTURE(rendered);
+        CHECK(fw::test::read_text(rendered) == fw::test::read_text(name));
+        if (links) CHECK(fs::equivalent(rendered, name));
+        expected[rendered] = {fw::test::read_text(name), inode(name)};
+    }
+    REQUIRE(expected.size() > 5);
+    fw::test::write_text(lab_dir + "/left_over.diff.png", "from an older grading");
+    fs::create_directories(lab_dir + "/left_over/inside");
+
+    // Black frames: every frame differs from its reference, and writing it
+    // must not change the reference's copy that was its second name.
+    Graded liar = grade_into("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=liar",
+                             "pipeline --lab " + fake_lab(), out);
+    CHECK(liar.exit_code == 1);
+    REQUIRE(liar.results.is_object());
+    CHECK(check_report_images(liar.results, out, "pipeline") > 0);
+    CHECK_FALSE(fs::exists(lab_dir + "/left_over.diff.png"));
+    CHECK_FALSE(fs::exists(lab_dir + "/left_over"));
+    for (const auto& [rendered, e] : expected) {
+        CAPTURE(rendered);
+        const std::string copy = rendered.substr(0, rendered.size() - 4) + ".expected.png";
+        CHECK(fw::test::read_text(copy) == e.bytes);
+        CHECK(fw::test::read_text(rendered) != e.bytes);
+        CHECK(fw::read_png(rendered).pixels.at(0).r == 0);
+    }
+
+    // The lab's own frames again: the difference images go, each frame is
+    // its reference's copy again, and that copy is the file it was.
+    Graded again = grade_into("COURSE_SEED=1234", "pipeline", out);
+    CHECK(again.exit_code == 0);
+    REQUIRE(again.results.is_object());
+    CHECK(check_report_images(again.results, out, "pipeline") == 0);
+    for (const auto& [rendered, e] : expected) {
+        CAPTURE(rendered);
+        const std::string copy = rendered.substr(0, rendered.size() - 4) + ".expected.png";
+        CHECK(fw::test::read_text(copy) == e.bytes);
+        CHECK(fw::test::read_text(rendered) == e.bytes);
+        CHECK(inode(copy) == e.inode);
+        if (links) CHECK(fs::equivalent(rendered, copy));
+    }
+    CHECK(again.results["tests"] == first.results["tests"]);
 }
 
 TEST_CASE("course grade --jobs 2 gives the same results as --jobs 1") {
