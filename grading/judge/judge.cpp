@@ -236,6 +236,70 @@ json read_units(const LabPlan& plan, const ChildOutputs& outputs, std::string& w
     return units;
 }
 
+// What a lab's checkpoints need from the lab's outputs as a whole.
+struct LabInputs {
+    const LabData& lab;
+    const LabPlan& plan;
+    const ChildOutputs& outputs;
+    const std::string& out_dir;
+    json units;
+    std::string units_why;
+    ReferenceImages references;  // other checkpoints' images, for a failed frame
+};
+
+// Check `i` of checkpoint `k`, on its frame (null when it renders none).
+void judge_check(LabInputs& in, size_t k, size_t i, const RenderPlan* render, Frame* frame,
+                 CheckResult& result) {
+    const fw::Checkpoint& cp = in.lab.file.checkpoints[k];
+    const Check& check = in.lab.checks.at(k)[i];
+    result.lab = in.lab.id;
+    result.checkpoint = cp.name;
+    result.kind = check.kind;
+    result.visibility = visibility_named(cp.visibility);
+    result.max_score = check.points;
+    switch (check.kind) {
+        case CheckKind::Image:
+            judge_image(in.lab, cp, check.as<ImageCheck>(), *frame, in.out_dir, in.references,
+                        result);
+            break;
+        case CheckKind::Probe:
+            judge_probe(check.as<ProbeCheck>(), *render, *frame, result);
+            break;
+        case CheckKind::Stat:
+            judge_stat(check.as<StatCheck>(), *frame, result);
+            break;
+        case CheckKind::Forbidden:
+            judge_forbidden(in.lab, check.as<ForbiddenCheck>(), in.outputs.status(), result);
+            break;
+        case CheckKind::Buffer:
+            judge_frame_buffer(check.as<BufferCheck>(), *frame, result);
+            break;
+        case CheckKind::Unit:
+            for (const UnitPlan& u : in.plan.units)
+                if (u.checkpoint == cp.name && u.check == i)
+                    judge_unit(in.lab, check.as<UnitCheck>(), u, in.plan.seed,
+                               in.units.is_object() ? &in.units : nullptr, in.units_why, result);
+            break;
+    }
+}
+
+// What this grading wrote into the lab's folder (its frames, and its
+// checks' expected and difference images) stays; what an earlier one left
+// there beside it goes.
+void keep_written(const std::string& dir, const std::vector<std::string>& rendered,
+                  const std::vector<CheckResult>& results) {
+    std::set<std::string> written;
+    auto keep = [&](const std::string& path) {
+        if (!path.empty()) written.insert(fs::path(path).filename().string());
+    };
+    for (const std::string& path : rendered) keep(path);
+    for (const CheckResult& c : results) {
+        keep(c.expected);
+        keep(c.difference);
+    }
+    keep_only(dir, written);
+}
+
 }  // namespace
 
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
@@ -243,75 +307,30 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    int threads) {
     std::map<std::string, const RenderPlan*> renders;
     for (const RenderPlan& r : plan.renders) renders[r.checkpoint] = &r;
-    std::string units_why;
-    const json units = read_units(plan, outputs, units_why);
+    LabInputs in{lab, plan, outputs, out_dir, json(), "", ReferenceImages(lab)};
+    in.units = read_units(plan, outputs, in.units_why);
     // Each checkpoint's frame is decoded, compared and encoded for the
     // report on its own: the checkpoints go to `threads` threads.
     const std::vector<fw::Checkpoint>& checkpoints = lab.file.checkpoints;
     std::vector<std::vector<CheckResult>> by_checkpoint(checkpoints.size());
     std::vector<std::string> rendered(checkpoints.size());
-    ReferenceImages references(lab);  // other checkpoints' images, for a failed frame
     parallel_for(checkpoints.size(), threads, [&](size_t k) {
-        const fw::Checkpoint& cp = checkpoints[k];
         std::optional<Frame> frame;
-        auto r = renders.find(cp.name);
-        if (r != renders.end()) frame.emplace(outputs, *r->second, lab.id, out_dir);
-        const std::vector<Check>& checks = lab.checks.at(k);
-        const Visibility visibility = visibility_named(cp.visibility);
-        for (size_t i = 0; i < checks.size(); ++i) {
-            const Check& check = checks[i];
-            CheckResult result;
-            result.lab = lab.id;
-            result.checkpoint = cp.name;
-            result.kind = check.kind;
-            result.visibility = visibility;
-            result.max_score = check.points;
-            switch (check.kind) {
-                case CheckKind::Image:
-                    judge_image(lab, cp, check.as<ImageCheck>(), *frame, out_dir, references,
-                                result);
-                    break;
-                case CheckKind::Probe:
-                    judge_probe(check.as<ProbeCheck>(), *r->second, *frame, result);
-                    break;
-                case CheckKind::Stat:
-                    judge_stat(check.as<StatCheck>(), *frame, result);
-                    break;
-                case CheckKind::Forbidden:
-                    judge_forbidden(lab, check.as<ForbiddenCheck>(), outputs.status(), result);
-                    break;
-                case CheckKind::Buffer:
-                    judge_frame_buffer(check.as<BufferCheck>(), *frame, result);
-                    break;
-                case CheckKind::Unit:
-                    for (const UnitPlan& u : plan.units)
-                        if (u.checkpoint == cp.name && u.check == i)
-                            judge_unit(lab, check.as<UnitCheck>(), u, plan.seed,
-                                       units.is_object() ? &units : nullptr, units_why, result);
-                    break;
-            }
-            by_checkpoint[k].push_back(std::move(result));
-        }
+        auto r = renders.find(checkpoints[k].name);
+        const RenderPlan* render = r == renders.end() ? nullptr : r->second;
+        if (render) frame.emplace(outputs, *render, lab.id, out_dir);
+        by_checkpoint[k].resize(lab.checks.at(k).size());
+        for (size_t i = 0; i < by_checkpoint[k].size(); ++i)
+            judge_check(in, k, i, render, frame ? &*frame : nullptr, by_checkpoint[k][i]);
         if (frame) {
             frame->publish();
             rendered[k] = frame->rendered();
         }
     });
-    // What this grading wrote into the lab's folder stays; what an earlier
-    // one left there beside it goes.
-    std::set<std::string> written;
-    auto keep = [&](const std::string& path) {
-        if (!path.empty()) written.insert(fs::path(path).filename().string());
-    };
-    for (const std::string& path : rendered) keep(path);
     std::vector<CheckResult> results;
     for (std::vector<CheckResult>& checks : by_checkpoint)
-        for (CheckResult& c : checks) {
-            keep(c.expected);
-            keep(c.difference);
-            results.push_back(std::move(c));
-        }
-    keep_only(out_dir + "/" + lab.id, written);
+        for (CheckResult& c : checks) results.push_back(std::move(c));
+    keep_written(out_dir + "/" + lab.id, rendered, results);
     return results;
 }
 
