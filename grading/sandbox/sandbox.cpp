@@ -183,7 +183,9 @@ void lab_ended(pid_t pid) {
 }
 
 int kill_strays(const RunAsUser* user) {
-    int killed = 0;
+    // Each process counts once: one that SIGKILL has not yet ended (a busy
+    // machine) is still there, and killed again, next round.
+    std::set<pid_t> killed;
     const pid_t self = getpid();
     // A killed process's children come to course in turn: go round until
     // nothing is left (a bounded number of times).
@@ -221,15 +223,15 @@ int kill_strays(const RunAsUser* user) {
                 if (adopted || users) strays.push_back(p.pid);
             }
             for (pid_t pid : strays)
-                if (kill(pid, SIGKILL) == 0) ++killed;
+                if (kill(pid, SIGKILL) == 0) killed.insert(pid);
         }
-        if (strays.empty()) return killed;
+        if (strays.empty()) break;
         // Reap the ones that were course's own; the others' parents do.
         for (pid_t pid : strays) waitpid(pid, nullptr, WNOHANG);
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
         for (pid_t pid : strays) waitpid(pid, nullptr, WNOHANG);
     }
-    return killed;
+    return static_cast<int>(killed.size());
 }
 
 std::vector<SandboxLayer> sandbox_layers(const RunAsUser* user, const ChildLimits& limits,

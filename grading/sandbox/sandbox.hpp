@@ -50,8 +50,8 @@ void lab_ended(pid_t pid);
 
 // Kills and reaps every process that no running lab started: course's
 // adopted children, and with `user` every process of that user. Returns how
-// many it killed. A zombie is not a stray: course reaps its own, and leaves
-// another's (of `user`, whose parent never reaps it) alone.
+// many processes it killed, each once. A zombie is not a stray: course reaps
+// its own, and leaves another's (of `user`, whose parent never reaps it) alone.
 int kill_strays(const RunAsUser* user);
 
 // Every layer, active or not, as the reports list them. `namespaces_why` and
