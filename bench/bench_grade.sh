@@ -20,9 +20,10 @@
 # Gradescope) figures are printed beside the warm ones. Prints figures; it is not a test.
 #
 #   bench/bench_grade.sh [RUNS=3] [extra course grade options, e.g. --backend osmesa]
+#   LAB_BIN=DIR: the programs in DIR instead of build/bin
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bin="$root/build/bin"
+bin=${LAB_BIN:-$root/build/bin}  # bench/bench_gpu.sh gives its staged programs
 for exe in course bench_floor bench_draw; do
   [ -x "$bin/$exe" ] || { echo "bench_grade: $bin/$exe not built; run scripts/setup.sh" >&2; exit 2; }
 done
