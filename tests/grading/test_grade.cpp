@@ -162,19 +162,23 @@ TEST_CASE("course grade again into the same folder: files written in place, noth
     CHECK(again.results["tests"] == first.results["tests"]);
 }
 
-TEST_CASE("course grade --jobs 2 gives the same results as --jobs 1") {
+TEST_CASE("course grade --jobs 2, and more jobs than labs, give the same results as --jobs 1") {
     const std::string tree = make_tree(fw::test::out_dir() + "/tree", /*hostile=*/true);
     const std::string env =
         "LAB_ROOT=" + tree + " COURSE_SEED=1234 FAKE_LAB_TARGET=hostile FAKE_LAB_MODE=liar";
     Graded one = grade(env, "--lab " + fake_lab() + " --jobs 1", fw::test::out_dir() + "/jobs1");
     Graded two = grade(env, "--lab " + fake_lab() + " --jobs 2", fw::test::out_dir() + "/jobs2");
+    // A child for each of the two labs, none more.
+    Graded many = grade(env, "--lab " + fake_lab() + " --jobs 8", fw::test::out_dir() + "/jobs8");
     CHECK(one.exit_code == 0);  // the liar's black frames are exactly what "hostile" expects
-    CHECK(two.exit_code == one.exit_code);
     REQUIRE(one.results.is_object());
-    REQUIRE(two.results.is_object());
     CHECK(checks_of(one.results).size() == lab0_checks().size() + 6);
-    CHECK(one.results["tests"] == two.results["tests"]);
-    CHECK(one.results["score"] == two.results["score"]);
+    for (const Graded* other : {&two, &many}) {
+        CHECK(other->exit_code == one.exit_code);
+        REQUIRE(other->results.is_object());
+        CHECK(one.results["tests"] == other->results["tests"]);
+        CHECK(one.results["score"] == other->results["score"]);
+    }
 }
 
 TEST_CASE("course warm-cache: a warning when the driver wrote no cache, none when it did") {
