@@ -8,8 +8,9 @@
 #   bench/bench_gpu.sh stage [BUILD=build-egl-only] [DIR=build-gpu]
 #       copies lab, course, bench_floor, bench_draw and bench_context from
 #       BUILD/bin into DIR/bin without their debug information, and into
-#       DIR/lib every library `ldd` lists for them except the C library's own
-#       and the GL and EGL dispatch libraries (the GPU's driver brings those);
+#       DIR/lib every library `ldd` lists for them except the C library's
+#       own, the GL and EGL dispatch libraries and the C++ runtime (the GPU
+#       machine's own, which its driver uses);
 #       DIR/source names the folder the programs were built from (they read
 #       labs/ and shaders/ there)
 #   bench/bench_gpu.sh run [DIR=build-gpu] [RUNS=3]
