@@ -91,18 +91,28 @@ int warm_cache_command(const WarmCacheOptions& options) {
     ChildLimits limits;
     limits.timeout_seconds = 300.0;
     const ShaderCache cache{std::filesystem::absolute(options.dir).string(), /*shared=*/true};
+    // Each lab twice. The first run compiles the GLSL and caches the
+    // programs; the second loads them from the cache, as every graded
+    // submission does, and llvmpipe compiles (and caches) code of its own for
+    // programs that come from the cache, which the first run never asked for.
+    // With the first run's cache alone, a grading of every lab still spent
+    // twice as long in LLVM (0.46-0.49 against 0.23-0.24 s of CPU, Mesa 22.3).
     for (const LabData& lab : labs) {
         const LabPlan plan = plan_lab(lab, 0, PlanFor::Grading);
-        LabChild child =
-            run_lab_child(lab_binary, plan.job, options.backend, limits, nullptr, cache);
-        if (!child.run.ok()) {
-            std::fprintf(stderr, "course: warm-cache: the lab child for '%s' %s\n%s",
-                         lab.id.c_str(), child.run.status.text().c_str(),
-                         indented_tail(child.run.log, 20).c_str());
-            return 2;
+        double seconds[2] = {0, 0};
+        for (double& s : seconds) {
+            LabChild child =
+                run_lab_child(lab_binary, plan.job, options.backend, limits, nullptr, cache);
+            if (!child.run.ok()) {
+                std::fprintf(stderr, "course: warm-cache: the lab child for '%s' %s\n%s",
+                             lab.id.c_str(), child.run.status.text().c_str(),
+                             indented_tail(child.run.log, 20).c_str());
+                return 2;
+            }
+            s = child.run.seconds;
         }
-        std::printf("warmed %s (%zu frames, %.2f s)\n", lab.id.c_str(), plan.renders.size(),
-                    child.run.seconds);
+        std::printf("warmed %s (%zu frames, %.2f s, then %.2f s from the cached programs)\n",
+                    lab.id.c_str(), plan.renders.size(), seconds[0], seconds[1]);
     }
     const std::uint64_t bytes = directory_bytes(cache.dir);
     std::printf("shader cache in %s: %s\n", cache.dir.c_str(), mib_text(bytes).c_str());
