@@ -186,13 +186,20 @@ TEST_CASE("course warm-cache: a warning when the driver wrote no cache, none whe
     // stderr, since --shader-cache would then spare nothing.
     const std::string empty = fw::test::out_dir() + "/cache-empty";
     fs::remove_all(empty);
-    fw::test::CommandResult r =
-        fw::test::run_command("FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=quick " + course() +
-                              " warm-cache " + empty + " pipeline --lab " + fake_lab());
+    const std::string mark = fw::test::out_dir() + "/warm_ran";
+    fs::remove(mark);
+    fw::test::CommandResult r = fw::test::run_command(
+        "FAKE_LAB_TARGET=pipeline FAKE_LAB_MODE=quick FAKE_LAB_MARK=" + mark + " " + course() +
+        " warm-cache " + empty + " pipeline --lab " + fake_lab());
     INFO(r.output);
     CHECK(r.exit_code == 0);
     fw::test::check_mentions(
         r.output, {"warmed pipeline", "warning: the driver wrote no shader cache into " + empty});
+    // Each lab runs twice: the second run is the one a graded submission
+    // resembles (it loads the programs the first one cached).
+    std::ifstream ran(mark);
+    std::string runs((std::istreambuf_iterator<char>(ran)), {});
+    CHECK(runs == "ran: pipeline\nran: pipeline\n");
 
     // The real lab's shaders fill it, and nothing is said.
     const std::string filled = fw::test::out_dir() + "/cache-filled";
@@ -200,7 +207,6 @@ TEST_CASE("course warm-cache: a warning when the driver wrote no cache, none whe
     r = fw::test::run_command(course() + " warm-cache " + filled + " pipeline");
     INFO(r.output);
     CHECK(r.exit_code == 0);
-    // Twice: the second run starts from the programs the first one cached.
     fw::test::check_mentions(r.output, {"warmed pipeline", "then", "from the cached programs",
                                         "shader cache in " + filled});
     CHECK(r.output.find("wrote no shader cache") == std::string::npos);
