@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -112,6 +113,20 @@ ShaderCache shader_cache_of(const GradeOptions& options) {
     return cache;
 }
 
+// For staff (the autograder's log): a --shader-cache that served a lab nothing.
+void print_cache_missed(const GradeRun& run, const std::string& dir) {
+    if (std::none_of(run.labs.begin(), run.labs.end(),
+                     [](const LabResult& lab) { return lab.shader_cache_missed; }))
+        return;
+    std::fprintf(stderr,
+                 "course: note: the shader cache %s was warmed on a machine whose CPUs differ "
+                 "from this one's, so it served nothing and every shader was compiled afresh: "
+                 "Mesa's llvmpipe keys its cache by the CPU's model and features, the number "
+                 "of CPUs installed and the number this process may use. Warm it with course "
+                 "warm-cache where grading runs, or on a machine with the same CPUs.\n",
+                 dir.c_str());
+}
+
 // --sandbox strict: every layer but --run-as, or no grading at all.
 void require_every_layer(const std::vector<SandboxLayer>& layers) {
     std::vector<std::string> missing;
@@ -147,6 +162,7 @@ LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& c
     result.checks = judge_lab(lab, plan, *child.outputs, out, threads);
     result.hidden_left_out = lab.file.hidden_checkpoints;
     result.hidden_points_left_out = lab.file.hidden_points;
+    result.shader_cache_missed = child.cache_missed;
     if (child.run.ok()) {
         const std::string shader_error = shader_error_status(*child.outputs);
         if (!shader_error.empty()) result.status = LabStatus::failed(shader_error);
@@ -253,6 +269,7 @@ int grade_command(const GradeOptions& options) {
     const size_t shown = options.verbose ? static_cast<size_t>(-1) : kTerminalFailedChecks;
     std::printf("%s\nReport: %s\n", summary_table(run, options.verbose, shown).c_str(),
                 (fs::path(options.out) / "index.html").string().c_str());
+    print_cache_missed(run, setup.cache.dir);
     return run.passed() ? 0 : 1;
 }
 

@@ -72,6 +72,9 @@ struct LabResult {
     // student's copy: `course release` left them out), and their points.
     int hidden_left_out = 0;
     double hidden_points_left_out = 0.0;
+    // Its child's Mesa did not find its cache's key in --shader-cache
+    // (seed_key_missed): said once on stderr, in no report.
+    bool shader_cache_missed = false;
 
     double score() const;
     double max_score() const;

@@ -147,6 +147,9 @@ struct LabChild {
     std::shared_ptr<WorkDir> dir;  // shared by the labs of one child (run_lab_children)
     ChildRun run;
     std::unique_ptr<ChildOutputs> outputs;
+    // The child's Mesa made its shader cache under a key the --shader-cache
+    // did not hold (seed_key_missed), so it compiled its shaders afresh.
+    bool cache_missed = false;
 };
 //
 // Mesa's shader cache: with `shader_cache` empty, the child uses Mesa's default
@@ -159,6 +162,12 @@ struct ShaderCache {
     std::string dir;
     bool shared = false;
 };
+// Whether a child that started from a private copy of `cache` in
+// `work_dir` made a Mesa cache of a key the copy did not have: Mesa's
+// llvmpipe keys its cache by the CPU (model and features, the CPUs
+// installed and those the process may use), so a cache warmed where these
+// differ serves nothing. False for a shared cache, or one without Mesa's.
+bool seed_key_missed(const ShaderCache& cache, const std::string& work_dir);
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                        const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
                        const ShaderCache& shader_cache = {});

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
@@ -44,6 +45,17 @@ std::vector<std::string> shader_cache_env(const ShaderCache& shader_cache, const
             "__GL_SHADER_DISK_CACHE_PATH=" + cache, "__GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1"};
 }
 
+// The keys of the Mesa shader caches in `dir` (single-file caches, one
+// folder each under mesa_shader_cache_sf).
+std::set<std::string> mesa_cache_keys(const std::string& dir) {
+    std::set<std::string> keys;
+    std::error_code ec;
+    for (fs::directory_iterator it(fs::path(dir) / "mesa_shader_cache_sf", ec), end;
+         !ec && it != end; it.increment(ec))
+        keys.insert(it->path().filename().string());
+    return keys;
+}
+
 // A lab's outputs in `dir`, as the run left them and sent them.
 void read_back(LabChild& child, const std::string& dir, const ChildLimits& limits,
                StreamedOutputs& streamed) {
@@ -74,6 +86,15 @@ std::vector<std::string> lay_out_labs(const WorkDir& dir, const std::vector<nloh
 
 }  // namespace
 
+bool seed_key_missed(const ShaderCache& cache, const std::string& work_dir) {
+    if (cache.dir.empty() || cache.shared) return false;
+    const std::set<std::string> seed = mesa_cache_keys(cache.dir);
+    if (seed.empty()) return false;
+    for (const std::string& key : mesa_cache_keys(work_dir + "/shader-cache"))
+        if (!seed.count(key)) return true;
+    return false;
+}
+
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                        const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
                        const ShaderCache& shader_cache) {
@@ -91,6 +112,7 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
     StreamedOutputs streamed(dir);
     child.run = run_child(argv, dir, limits, user, env, nullptr, &streamed);
     read_back(child, dir, limits, streamed);
+    child.cache_missed = seed_key_missed(shader_cache, dir);
     return child;
 }
 
@@ -118,6 +140,7 @@ void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann:
         child.run.seconds = marks.ended[i].seconds;
         child.run.log = marks.ended[i].log + tail;
         read_back(child, dir->path() + "/" + std::to_string(i), limits, streamed);
+        child.cache_missed = seed_key_missed(shader_cache, dir->path());
         return child;
     };
     // Each lab but the last is judged while the child goes on; the last

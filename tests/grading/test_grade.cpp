@@ -1,6 +1,7 @@
 // `course grade` and `course bless` on the real lab 0 (docs/contract.md, `course`),
 // and the usage errors that stop a run before any child starts (Errors).
 // Expected scores come from lab 0's data file, read here.
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -213,6 +214,50 @@ TEST_CASE("course warm-cache: a warning when the driver wrote no cache, none whe
     int files = 0;
     for (const auto& e : fs::recursive_directory_iterator(filled)) files += e.is_regular_file();
     CHECK(files > 0);
+}
+
+TEST_CASE("course grade --shader-cache: a note when the seed was warmed for other CPUs") {
+    // llvmpipe keys its cache by the CPUs: a seed warmed for others serves
+    // nothing, and the autograder's log says so once, after the report.
+    const std::string seed = fw::test::out_dir() + "/cache-seed";
+    fs::remove_all(seed);
+    fw::test::CommandResult r =
+        fw::test::run_command(course() + " warm-cache " + seed + " pipeline");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::vector<fs::path> keys;
+    for (const auto& e : fs::directory_iterator(seed + "/mesa_shader_cache_sf")) keys.push_back(e);
+    REQUIRE(keys.size() == 1);
+    const std::string note = "was warmed on a machine whose CPUs differ";
+    const std::string out = fw::test::out_dir() + "/report-seeded";
+    // The seed of these CPUs: no note, with one lab (a child of its own) or
+    // two (one child), though the seed holds only the first one's shaders.
+    for (const std::string labs : {"pipeline", "pipeline transforms"}) {
+        Graded g = grade("", labs + " --shader-cache " + seed, out);
+        CHECK(g.exit_code == 0);
+        CHECK(g.output.find(note) == std::string::npos);
+    }
+    // The same seed under another key, as other CPUs would have made it.
+    const std::string other = fw::test::out_dir() + "/cache-other-cpus";
+    fs::remove_all(other);
+    fs::copy(seed, other, fs::copy_options::recursive);
+    fs::rename(fs::path(other) / fs::relative(keys[0], seed),
+               fs::path(other) / "mesa_shader_cache_sf" / std::string(40, '0'));
+    for (const std::string labs : {"pipeline", "pipeline transforms"}) {
+        Graded g = grade("", labs + " --shader-cache " + other, out);
+        CHECK(g.exit_code == 0);
+        fw::test::check_mentions(g.output, {"course: note: the shader cache " + other, note,
+                                            "course warm-cache where grading runs"});
+        CHECK(g.output.find(note) == g.output.rfind(note));
+    }
+    // The seed of these CPUs, graded on one of them: truly other CPUs.
+    cpu_set_t cpus;
+    if (sched_getaffinity(0, sizeof cpus, &cpus) != 0 || CPU_COUNT(&cpus) < 2) {
+        MESSAGE("SKIP the one-CPU case: this process may use only one CPU");
+        return;
+    }
+    Graded g = grade("", "pipeline --shader-cache " + seed, out, "taskset -c 0");
+    CHECK(g.exit_code == 0);
+    fw::test::check_mentions(g.output, {note});
 }
 
 TEST_CASE("course grade: usage and set-up errors exit 2 and say what would fix them") {
