@@ -17,8 +17,11 @@
 # without CAP_SYS_ADMIN, /sys/fs/cgroup read-only (so every lab's child stays
 # in the measured cgroup). Prints, per run, the seconds course
 # autograde spent copying, building and grading and the total, and the peak
-# memory (the cgroup's peak, page cache included) and whether the limit
-# killed anything. Needs root. Prints figures; it is not a test.
+# memory (the cgroup's peak, page cache included), whether the limit
+# killed anything, and whether the warmed shader cache served the grading
+# (served; missed: Mesa keys it by the CPUs, and a run pinned to one core is
+# not on the CPUs setup.sh warmed it on; none). Needs root. Prints figures;
+# it is not a test.
 #
 #   sudo bench/bench_gradescope.sh
 set -euo pipefail
@@ -115,13 +118,19 @@ run() {
   layers=$(sed -n 's/^Sandbox: //p' "$log" | tr ';' '\n' | sed -n 's/^ *on: \([^(]*\) (.*/\1/p' |
     paste -sd, -)
   step() { sed -n "s/.*$1.* took \([0-9.]*\) s.*/\1/p" "$log" | tail -1; }
-  printf '%-9s %-20s %6s %6s %6s %7.1f  %-22s %s\n' "$label" "$machine" "$(step copying)" \
+  # Whether the warmed shader cache served the labs' children: course grade
+  # notes it when Mesa keyed their cache otherwise (other CPUs than setup.sh's).
+  local seed=served
+  grep -q 'shader-cache' "$log" || seed=none
+  grep -q 'was warmed on a machine whose CPUs differ' "$log" && seed=missed
+  printf '%-9s %-20s %6s %6s %6s %7.1f  %-22s %-6s %s\n' "$label" "$machine" "$(step copying)" \
     "$(step building)" "$(step grading)" "$(awk -v a="$t0" -v b="$t1" 'BEGIN {print b - a}')" \
-    "$peak" "$(sed -n 's/^ *"score": \([0-9.]*\),*$/\1/p' "$ag/results/results.json" | head -1)"
+    "$peak" "$seed" \
+    "$(sed -n 's/^ *"score": \([0-9.]*\),*$/\1/p' "$ag/results/results.json" | head -1)"
 }
 
-printf '%-9s %-20s %6s %6s %6s %7s  %-22s %s\n' submission machine copy build grade total \
-  "peak memory (cgroup)" score
+printf '%-9s %-20s %6s %6s %6s %7s  %-22s %-6s %s\n' submission machine copy build grade total \
+  "peak memory (cgroup)" cache score
 for scenario in "one lab:labs/00_" "all labs:labs/" "lab 0:labs/00_"; do
   label=${scenario%%:*}
   pattern=${scenario#*:}
