@@ -90,7 +90,9 @@ int warm_cache_command(const WarmCacheOptions& options) {
                              "': " + ec.message());
     ChildLimits limits;
     limits.timeout_seconds = 300.0;
-    const ShaderCache cache{std::filesystem::absolute(options.dir).string(), /*shared=*/true};
+    ShaderCache cache;
+    cache.dir = std::filesystem::absolute(options.dir).string();
+    cache.shared = true;
     // Each lab twice. The first run compiles the GLSL and caches the
     // programs; the second loads them from the cache, as every graded
     // submission does, and llvmpipe compiles (and caches) code of its own for

@@ -110,6 +110,7 @@ ShaderCache shader_cache_of(const GradeOptions& options) {
         throw fw::UsageError("--shader-cache " + options.shader_cache +
                              ": no such directory; make it with course warm-cache");
     cache.dir = fs::absolute(options.shader_cache).string();
+    cache.mesa_keys = mesa_cache_keys(cache.dir);
     return cache;
 }
 

@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -161,12 +162,19 @@ struct LabChild {
 struct ShaderCache {
     std::string dir;
     bool shared = false;
+    // The keys of Mesa's caches in `dir` (mesa_cache_keys), listed once
+    // before grading, for seed_key_missed.
+    std::set<std::string> mesa_keys;
 };
+// The keys of the Mesa shader caches in `dir` (single-file caches, one
+// folder each under mesa_shader_cache_sf).
+std::set<std::string> mesa_cache_keys(const std::string& dir);
 // Whether a child that started from a private copy of `cache` in
 // `work_dir` made a Mesa cache of a key the copy did not have: Mesa's
 // llvmpipe keys its cache by the CPU (model and features, the CPUs
 // installed and those the process may use), so a cache warmed where these
-// differ serves nothing. False for a shared cache, or one without Mesa's.
+// differ serves nothing. False for a shared cache, or one without Mesa's
+// (no `mesa_keys`).
 bool seed_key_missed(const ShaderCache& cache, const std::string& work_dir);
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                        const std::string& backend, const ChildLimits& limits, const RunAsUser* user,

@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <set>
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
@@ -45,17 +44,6 @@ std::vector<std::string> shader_cache_env(const ShaderCache& shader_cache, const
             "__GL_SHADER_DISK_CACHE_PATH=" + cache, "__GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1"};
 }
 
-// The keys of the Mesa shader caches in `dir` (single-file caches, one
-// folder each under mesa_shader_cache_sf).
-std::set<std::string> mesa_cache_keys(const std::string& dir) {
-    std::set<std::string> keys;
-    std::error_code ec;
-    for (fs::directory_iterator it(fs::path(dir) / "mesa_shader_cache_sf", ec), end;
-         !ec && it != end; it.increment(ec))
-        keys.insert(it->path().filename().string());
-    return keys;
-}
-
 // A lab's outputs in `dir`, as the run left them and sent them.
 void read_back(LabChild& child, const std::string& dir, const ChildLimits& limits,
                StreamedOutputs& streamed) {
@@ -86,12 +74,19 @@ std::vector<std::string> lay_out_labs(const WorkDir& dir, const std::vector<nloh
 
 }  // namespace
 
+std::set<std::string> mesa_cache_keys(const std::string& dir) {
+    std::set<std::string> keys;
+    std::error_code ec;
+    for (fs::directory_iterator it(fs::path(dir) / "mesa_shader_cache_sf", ec), end;
+         !ec && it != end; it.increment(ec))
+        keys.insert(it->path().filename().string());
+    return keys;
+}
+
 bool seed_key_missed(const ShaderCache& cache, const std::string& work_dir) {
-    if (cache.dir.empty() || cache.shared) return false;
-    const std::set<std::string> seed = mesa_cache_keys(cache.dir);
-    if (seed.empty()) return false;
+    if (cache.shared || cache.mesa_keys.empty()) return false;
     for (const std::string& key : mesa_cache_keys(work_dir + "/shader-cache"))
-        if (!seed.count(key)) return true;
+        if (!cache.mesa_keys.count(key)) return true;
     return false;
 }
 

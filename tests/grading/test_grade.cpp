@@ -241,7 +241,7 @@ TEST_CASE("course grade --shader-cache: a note when the seed was warmed for othe
     // The seed of these CPUs: no note, with one lab (a child of its own) or
     // two (one child), though the seed holds only the first one's shaders.
     for (const std::string labs : {"pipeline", "pipeline transforms"}) {
-        Graded g = grade("", labs + " --shader-cache " + seed, out);
+        Graded g = grade("", labs + " --jobs 1 --shader-cache " + seed, out);
         CHECK(g.exit_code == 0);
         CHECK(g.output.find(note) == std::string::npos);
     }
@@ -252,7 +252,7 @@ TEST_CASE("course grade --shader-cache: a note when the seed was warmed for othe
     fs::rename(fs::path(other) / "mesa_shader_cache_sf" / keys[0],
                fs::path(other) / "mesa_shader_cache_sf" / std::string(40, '0'));
     for (const std::string labs : {"pipeline", "pipeline transforms"}) {
-        Graded g = grade("", labs + " --shader-cache " + other, out);
+        Graded g = grade("", labs + " --jobs 1 --shader-cache " + other, out);
         CHECK(g.exit_code == 0);
         fw::test::check_mentions(g.output, {"course: note: the shader cache " + other, note,
                                             "course warm-cache where grading runs"});
