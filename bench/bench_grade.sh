@@ -9,6 +9,7 @@
 #   grading (warm, --jobs 1) / the floor        <= 1.5
 #   grading (warm, --jobs 1) / the floor once   <= 2.0
 #   with / without namespaces and cgroups       <= 1.05 (root only)
+# and, without a goal, the CPU seconds of course and of the labs' children.
 #   the wrapper's per-draw cost / raw GL        <= 1.02   (bench_draw)
 # The floor (bench_floor) is the same frames rendered and read back in one
 # process with nothing written: each lab's better of two rounds ("floor"), and
@@ -114,6 +115,10 @@ for lab in $labs; do
   # Labs 0-6 (the first seven `lab list` prints) set the bar for the later ones.
   if [ $((n++)) -lt 7 ]; then worst_first=$(max "$worst_first" "$w"); else worst_later=$(max "$worst_later" "$w"); fi
 done
+# Where a grading's CPU goes: course judging, against the labs' children
+# rendering (its CPU: line); on less than a core their sum is the wall time.
+cpu=$("$bin/course" grade --verbose --jobs 1 --out "$out/r" "$@" 2>/dev/null | sed -n 's/^CPU: //p')
+echo "CPU seconds of all labs, warm, --jobs 1: ${cpu:-not reported}"
 echo
 echo "figures against the goals (warm shader cache):"
 row "all labs, --jobs 2 (s)" "$warm2" "<=" 0.6

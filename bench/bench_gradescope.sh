@@ -20,8 +20,10 @@
 # memory (the cgroup's peak, page cache included), whether the limit
 # killed anything, and whether the warmed shader cache served the grading
 # (served; missed: Mesa keys it by the CPUs, and a run pinned to one core is
-# not on the CPUs setup.sh warmed it on; none). Needs root. Prints figures;
-# it is not a test.
+# not on the CPUs setup.sh warmed it on; none), and the CPU seconds of the
+# grading (cpu c+l: course's own, plus the labs' children's, from its CPU:
+# line; at half a core, grading's wall time is about twice their sum). Needs
+# root. Prints figures; it is not a test.
 #
 #   sudo bench/bench_gradescope.sh
 set -euo pipefail
@@ -35,8 +37,8 @@ chmod 755 "$work"
 # make_cgroup runs in a command substitution (a subshell): the cgroups are
 # found again by their names, which carry this script's pid.
 cleanup() {
-  for g in /sys/fs/cgroup/bench-gradescope-$$-* /sys/fs/cgroup/*/bench-gradescope-$$-*; do
-    [ -d "$g" ] && rmdir "$g" 2>/dev/null || true
+  for g in /sys/fs/cgroup/bench-gradescope-"$$"-* /sys/fs/cgroup/*/bench-gradescope-"$$"-*; do
+    if [ -d "$g" ]; then rmdir "$g" 2>/dev/null || true; fi
   done
   rm -rf "$work"
 }
@@ -123,14 +125,17 @@ run() {
   local seed=served
   grep -q 'shader-cache' "$log" || seed=none
   grep -q 'was warmed on a machine whose CPUs differ' "$log" && seed=missed
-  printf '%-9s %-20s %6s %6s %6s %7.1f  %-22s %-6s %s\n' "$label" "$machine" "$(step copying)" \
+  # course's CPU seconds and its children's, from the CPU: line of its summary.
+  local cpu
+  cpu=$(sed -n 's/^CPU: \([0-9.]*\) s in course.*, \([0-9.]*\) s in the labs.*/\1+\2/p' "$log" | tail -1)
+  printf '%-9s %-20s %6s %6s %6s %7.1f  %-22s %-6s %-9s %s\n' "$label" "$machine" "$(step copying)" \
     "$(step building)" "$(step grading)" "$(awk -v a="$t0" -v b="$t1" 'BEGIN {print b - a}')" \
-    "$peak" "$seed" \
+    "$peak" "$seed" "${cpu:-?}" \
     "$(sed -n 's/^ *"score": \([0-9.]*\),*$/\1/p' "$ag/results/results.json" | head -1)"
 }
 
-printf '%-9s %-20s %6s %6s %6s %7s  %-22s %-6s %s\n' submission machine copy build grade total \
-  "peak memory (cgroup)" cache score
+printf '%-9s %-20s %6s %6s %6s %7s  %-22s %-6s %-9s %s\n' submission machine copy build grade total \
+  "peak memory (cgroup)" cache "cpu c+l" score
 for scenario in "one lab:labs/00_" "all labs:labs/" "lab 0:labs/00_"; do
   label=${scenario%%:*}
   pattern=${scenario#*:}

@@ -1,5 +1,6 @@
 // `course grade` (docs/contract.md, `course grade`): one `lab grade-child` per lab, judged
 // by course from the child's raw outputs, then the reports.
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -31,6 +32,20 @@ namespace grading {
 namespace fs = std::filesystem;
 
 namespace {
+
+// User and system seconds of getrusage(who); negative when it fails.
+double cpu_seconds(int who) {
+    rusage usage{};
+    if (getrusage(who, &usage) != 0) return -1.0;
+    auto seconds = [](const timeval& t) { return double(t.tv_sec) + double(t.tv_usec) / 1e6; };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+// Course's CPU so far and its children's (every child has been waited for).
+void record_cpu_seconds(GradeRun& run) {
+    run.course_cpu_seconds = cpu_seconds(RUSAGE_SELF);
+    run.children_cpu_seconds = cpu_seconds(RUSAGE_CHILDREN);
+}
 
 unsigned seed_from_env() {
     const char* text = std::getenv("COURSE_SEED");
@@ -265,6 +280,7 @@ int grade_command(const GradeOptions& options) {
     });
 
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record_cpu_seconds(run);
     write_reports(run, options.out, {options.format, options.results, options.hidden_as});
     // The report's path last, where a student's eye ends.
     const size_t shown = options.verbose ? static_cast<size_t>(-1) : kTerminalFailedChecks;

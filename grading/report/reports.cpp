@@ -343,6 +343,11 @@ std::string summary_table(const GradeRun& run, bool sandbox, size_t max_failed) 
              report::fixed(run.seconds, 1) + " s" +
              (run.backend.empty() ? "" : ", backend " + ascii(run.backend)) + "\n";
     table += report::score_meaning(run);
+    if (sandbox && run.course_cpu_seconds >= 0.0 && run.children_cpu_seconds >= 0.0)
+        table += "CPU: " + report::fixed(run.course_cpu_seconds, 2) +
+                 " s in course (judging, the report's images), " +
+                 report::fixed(run.children_cpu_seconds, 2) +
+                 " s in the labs' children (rendering)\n";
     if (sandbox && !run.sandbox.empty())
         table += "Sandbox: " + ascii(report::sandbox_line(run.sandbox)) + "\n";
     return table;

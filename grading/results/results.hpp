@@ -85,6 +85,12 @@ struct GradeRun {
     std::vector<LabResult> labs;
     std::string backend;  // as asked: auto, osmesa, egl
     double seconds = 0.0;
+    // Seconds of CPU until the labs were judged (user and system): course's
+    // own, all its threads (judging, the report's images), and its
+    // children's (the labs' children, with whatever they started); negative
+    // when not measured.
+    double course_cpu_seconds = -1.0;
+    double children_cpu_seconds = -1.0;
     // The sandbox's layers, active or not (grading/sandbox/sandbox.hpp), for
     // summary.txt, index.html and results.json.
     std::vector<SandboxLayer> sandbox;

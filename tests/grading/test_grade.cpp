@@ -10,6 +10,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <thread>
 
 #include "framework/image.hpp"
 #include "tests/grading/grade_support.hpp"
@@ -62,6 +63,26 @@ std::vector<std::string> warm_keys(const std::string& dir, const std::string& wr
     return keys;
 }
 
+// summary.txt's CPU line: course's seconds and its children's, each at
+// least once and at most the run's wall time on every core.
+void check_cpu_line(const std::string& summary, double wall_seconds) {
+    const size_t at = summary.find("\nCPU: ");
+    REQUIRE(at != std::string::npos);
+    const std::string line = summary.substr(at + 1, summary.find('\n', at + 1) - at - 1);
+    INFO(line);
+    double course = -1, children = -1;
+    REQUIRE(std::sscanf(line.c_str(),
+                        "CPU: %lf s in course (judging, the report's images), %lf s in the "
+                        "labs' children (rendering)",
+                        &course, &children) == 2);
+    const double most = wall_seconds * std::max(1u, std::thread::hardware_concurrency()) + 0.05;
+    CHECK(course > 0.0);
+    CHECK(course <= most);
+    // A child that started Mesa and rendered frames: never nothing.
+    CHECK(children >= 0.01);
+    CHECK(children <= most);
+}
+
 }  // namespace
 
 TEST_CASE("course grade pipeline: full marks on each backend") {
@@ -80,6 +101,7 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
         CHECK(g.results["max_score"].get<double>() == points(checks));
         CHECK(g.results["score"].get<double>() == g.results["max_score"].get<double>());
         check_reports(out, checks.size());
+        check_cpu_line(fw::test::read_text(out + "/summary.txt"), g.seconds);
         for (const json& t : g.results["tests"]) {
             CAPTURE(t.dump());
             CHECK(t["status"] == "passed");
@@ -366,7 +388,7 @@ TEST_CASE("course grade: a unit check fails when the child returns wrong results
 
 TEST_CASE(
     "course grade in the terminal: each failed check's likely mistake and first case, the "
-    "report's path last, the sandbox only with --verbose") {
+    "report's path last, the CPU and the sandbox only with --verbose") {
     const std::string out = fw::test::out_dir() + "/report";
     Graded g = grade("FAKE_LAB_TARGET=transforms FAKE_LAB_MODE=transposed_unit",
                      "transforms --lab " + fake_lab(), out);
@@ -381,6 +403,8 @@ TEST_CASE(
     CHECK(summary.find("Likely mistake (transpose)") != std::string::npos);
     CHECK(summary.find("\nSandbox: ") != std::string::npos);
     CHECK(g.output.find("Sandbox: ") == std::string::npos);
+    CHECK(summary.find("\nCPU: ") != std::string::npos);
+    CHECK(g.output.find("\nCPU: ") == std::string::npos);
     const std::string last = "\nReport: " + out + "/index.html\n";
     REQUIRE(g.output.size() > last.size());
     CHECK(g.output.substr(g.output.size() - last.size()) == last);
@@ -393,6 +417,7 @@ TEST_CASE(
                            "transforms --verbose --lab " + fake_lab(), out);
     CHECK(verbose.output.find("\nSandbox: ") != std::string::npos);
     CHECK(verbose.output.find("\nSandbox: ") < verbose.output.find("\nReport: "));
+    CHECK(verbose.output.find("\nCPU: ") < verbose.output.find("\nSandbox: "));
 }
 
 TEST_CASE("course bless writes the references that course grade then accepts, on every backend") {
