@@ -30,8 +30,9 @@ struct ResultsFile {
 // The score table: one line per lab with its score and status; every failed
 // check with why in a line, what most likely went wrong and, for a unit
 // check, its first failing case; the total and what it means; and, with
-// `sandbox`, the sandbox's layers in a line (summary.txt has them always,
-// the terminal with `course grade --verbose`). The terminal shows the first
+// `sandbox`, the run's CPU seconds (where measured) and the sandbox's layers,
+// a line each (summary.txt has them always, the terminal with `course grade
+// --verbose`). The terminal shows the first
 // `max_failed` failed checks and counts the rest (summary.txt: all).
 std::string summary_table(const GradeRun& run, bool sandbox = true,
                           std::size_t max_failed = static_cast<std::size_t>(-1));

@@ -617,7 +617,7 @@ TEST_CASE("base64 gives RFC 4648's test vectors, padding included") {
 
 TEST_CASE(
     "the summary of a failed unit check: partial points, its likely mistake and first case, what "
-    "the score means; the sandbox's line only where asked") {
+    "the score means; the CPU and sandbox lines only where asked") {
     const std::string dir = fw::test::out_dir() + "/partial";
     std::filesystem::remove_all(dir);
     LabResult lab;
@@ -652,6 +652,16 @@ TEST_CASE(
     CHECK(terminal.find("Sandbox:") == std::string::npos);
     CHECK(grading::summary_table(run).find("\nSandbox: on: seccomp filter") != std::string::npos);
     CHECK(read_text(dir + "/summary.txt") == grading::summary_table(run));
+    // Not measured (as here): no CPU line; measured: one, before the sandbox's.
+    CHECK(grading::summary_table(run).find("CPU:") == std::string::npos);
+    run.course_cpu_seconds = 0.5;
+    run.children_cpu_seconds = 1.254;
+    const std::string cpu =
+        "\nCPU: 0.50 s in course (judging, the report's images), 1.25 s in the labs' children "
+        "(rendering)\nSandbox: ";
+    CHECK(grading::summary_table(run).find(cpu) != std::string::npos);
+    CHECK(grading::summary_table(run, false).find("CPU:") == std::string::npos);
+    run.course_cpu_seconds = -1.0;
     // The terminal's cap: the first failed check shown, the other counted.
     const std::string capped = grading::summary_table(run, false, 1);
     CHECK(capped.find("Likely mistake (transpose)") != std::string::npos);
