@@ -41,11 +41,24 @@ double cpu_seconds(int who) {
     return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-// Course's CPU so far and its children's (every child has been waited for).
-void record_cpu_seconds(GradeRun& run) {
-    run.course_cpu_seconds = cpu_seconds(RUSAGE_SELF);
-    run.children_cpu_seconds = cpu_seconds(RUSAGE_CHILDREN);
-}
+// A grading's wall time, and course's CPU and its children's, since it
+// began. Both CPU counts go on across exec() (scripts/grade.sh execs course
+// after its build, whose compilers would count as children), hence the
+// figures at the start.
+struct RunClock {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    double self = cpu_seconds(RUSAGE_SELF);
+    double children = cpu_seconds(RUSAGE_CHILDREN);
+
+    // Into `run`, once every child has been waited for.
+    void stop(GradeRun& run) const {
+        const RunClock now;
+        run.seconds = std::chrono::duration<double>(now.start - start).count();
+        if (self >= 0.0 && now.self >= 0.0) run.course_cpu_seconds = now.self - self;
+        if (children >= 0.0 && now.children >= 0.0)
+            run.children_cpu_seconds = now.children - children;
+    }
+};
 
 unsigned seed_from_env() {
     const char* text = std::getenv("COURSE_SEED");
@@ -230,7 +243,7 @@ private:
 }  // namespace
 
 int grade_command(const GradeOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
+    const RunClock timing;
     const std::vector<LabData> all = discover_labs(source_root());
     std::vector<LabData> labs = select_labs(all, options.labs);
     for (LabData& lab : labs) parse_checks(lab);
@@ -279,8 +292,7 @@ int grade_command(const GradeOptions& options) {
         }
     });
 
-    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    record_cpu_seconds(run);
+    timing.stop(run);
     write_reports(run, options.out, {options.format, options.results, options.hidden_as});
     // The report's path last, where a student's eye ends.
     const size_t shown = options.verbose ? static_cast<size_t>(-1) : kTerminalFailedChecks;

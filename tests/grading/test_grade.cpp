@@ -63,8 +63,8 @@ std::vector<std::string> warm_keys(const std::string& dir, const std::string& wr
     return keys;
 }
 
-// summary.txt's CPU line: course's seconds and its children's, each at
-// least once and at most the run's wall time on every core.
+// summary.txt's CPU line: course's seconds and its children's, each more
+// than none and at most the run's wall time on every core.
 void check_cpu_line(const std::string& summary, double wall_seconds) {
     const size_t at = summary.find("\nCPU: ");
     REQUIRE(at != std::string::npos);
@@ -120,6 +120,21 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
         std::printf("SKIP: neither osmesa nor egl renders here\n");
         std::exit(77);
     }
+}
+
+TEST_CASE("course grade's CPU line counts only its own grading, not what ran before an exec") {
+    // A shell that burns a second of CPU in a child, then execs course, as
+    // scripts/grade.sh execs it after its build: getrusage's counts carry
+    // over exec(), and the line must not show that second.
+    const std::string out = fw::test::out_dir() + "/after-exec";
+    Graded g = grade("", "pipeline", out,
+                     "sh -c 'timeout 1 sh -c \"while :; do :; done\"; exec \"$@\"' burn");
+    CHECK(g.exit_code == 0);
+    REQUIRE(g.results.is_object());
+    REQUIRE(g.seconds >= 1.0);  // the burn ran
+    // course's own wall time: the bound is what its cores could spend in it.
+    check_cpu_line(fw::test::read_text(out + "/summary.txt"),
+                   g.results["execution_time"].get<double>());
 }
 
 TEST_CASE("course grade: a difference image for each frame whose pixels differ") {
