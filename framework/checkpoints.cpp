@@ -40,6 +40,40 @@ std::string lab_of_checkpoint_file(const std::string& path, const nlohmann::json
     return id;
 }
 
+// A checkpoint's "parts": the sheet's part numbers (1, 2, ...).
+template <class Fail>
+std::vector<int> part_numbers(const nlohmann::json& parts, const std::string& where, Fail fail) {
+    if (!parts.is_array()) fail(where + "\"parts\" must be an array of part numbers");
+    std::vector<int> numbers;
+    for (const nlohmann::json& n : parts) {
+        if (!n.is_number_unsigned() || n.get<int>() < 1)
+            fail(where + "\"parts\" must list the sheet's part numbers (1, 2, ...)");
+        numbers.push_back(n.get<int>());
+    }
+    return numbers;
+}
+
+// The file's fields beside "checkpoints": "hidden" (what course release
+// left out) and "parts" (raw; course reads it).
+template <class Fail>
+void read_top_level(const nlohmann::json& doc, CheckpointFile& file, Fail fail) {
+    if (doc.contains("hidden")) {
+        const nlohmann::json& h = doc["hidden"];
+        if (!h.is_object() || !h.value("checkpoints", nlohmann::json()).is_number_unsigned() ||
+            !h.value("points", nlohmann::json()).is_number() || h["points"].get<double>() < 0)
+            fail(
+                "\"hidden\" must be {\"checkpoints\": N, \"points\": P} (what course release "
+                "left out)");
+        file.hidden_checkpoints = h["checkpoints"].get<int>();
+        file.hidden_points = h["points"].get<double>();
+    }
+    if (doc.contains("parts")) {
+        if (!doc["parts"].is_array())
+            fail("\"parts\" must be an array of {\"part\", \"file\", \"function\"}");
+        file.parts = doc["parts"];
+    }
+}
+
 }  // namespace
 
 CheckpointFile read_checkpoint_file(const std::string& path) {
@@ -57,16 +91,7 @@ CheckpointFile read_checkpoint_file(const std::string& path) {
     CheckpointFile file;
     file.path = path;
     file.lab = lab_of_checkpoint_file(path, doc, fail);
-    if (doc.contains("hidden")) {
-        const nlohmann::json& h = doc["hidden"];
-        if (!h.is_object() || !h.value("checkpoints", nlohmann::json()).is_number_unsigned() ||
-            !h.value("points", nlohmann::json()).is_number() || h["points"].get<double>() < 0)
-            fail(
-                "\"hidden\" must be {\"checkpoints\": N, \"points\": P} (what course release "
-                "left out)");
-        file.hidden_checkpoints = h["checkpoints"].get<int>();
-        file.hidden_points = h["points"].get<double>();
-    }
+    read_top_level(doc, file, fail);
     std::set<std::string> names;
     for (const auto& item : doc["checkpoints"]) {
         Checkpoint cp;
@@ -82,9 +107,9 @@ CheckpointFile read_checkpoint_file(const std::string& path) {
             fail(where + "names may use only letters, digits, '_' and '-'");
         for (const auto& [key, value] : item.items())
             if (key != "name" && key != "visibility" && key != "description" && key != "params" &&
-                key != "checks")
+                key != "checks" && key != "parts")
                 fail(where + "unknown field \"" + key +
-                     "\"; fields are name, visibility, description, params, checks");
+                     "\"; fields are name, visibility, description, params, checks, parts");
         cp.visibility = item.value("visibility", std::string("visible"));
         if (cp.visibility != "visible" && cp.visibility != "hidden")
             fail(where + "visibility must be \"visible\" or \"hidden\", not \"" + cp.visibility +
@@ -98,6 +123,7 @@ CheckpointFile read_checkpoint_file(const std::string& path) {
             if (!item["checks"].is_array()) fail(where + "\"checks\" must be an array");
             cp.checks = item["checks"];
         }
+        if (item.contains("parts")) cp.parts = part_numbers(item["parts"], where, fail);
         file.checkpoints.push_back(std::move(cp));
     }
     return file;

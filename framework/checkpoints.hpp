@@ -26,6 +26,9 @@ struct Checkpoint {
     std::string description;
     nlohmann::json params = nlohmann::json::object();  // name -> value, as written
     nlohmann::json checks = nlohmann::json::array();   // raw; interpreted by `course`
+    // The numbers of the sheet's parts the checkpoint needs ("parts": [4]);
+    // the file's "parts" says where each is. Only `course` reads them.
+    std::vector<int> parts;
 };
 
 struct CheckpointFile {
@@ -37,6 +40,10 @@ struct CheckpointFile {
     // "points": P}); zero elsewhere.
     int hidden_checkpoints = 0;
     double hidden_points = 0.0;
+    // The file's top-level "parts": where each of the sheet's parts is
+    // written ([{"part": 4, "function": "back_to_front", "file": "labs/..."}]),
+    // raw; `course` reads it (grading/judge/starting_code.hpp).
+    nlohmann::json parts = nlohmann::json::array();
 };
 
 // Reads the file and checks its structure (fields, names, visibility) without

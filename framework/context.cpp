@@ -12,6 +12,7 @@
 
 #include "framework/backends/backends.hpp"
 #include "framework/error.hpp"
+#include "framework/gl/calls.hpp"
 #include "framework/gl/vertex_array.hpp"
 
 namespace fw {
@@ -139,6 +140,7 @@ void load_gl_and_check(GLLoader loader, ContextInfo& info) {
             "could not load OpenGL through the " + info.backend +
             " backend: glGetString is missing or returned no GL_VERSION (is a context current?)");
     }
+    gl_calls::install();
     detail::track_vertex_array_binding();
     info.gl_version = gl_string(GL_VERSION);
     info.gl_renderer = gl_string(GL_RENDERER);

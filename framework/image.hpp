@@ -92,9 +92,12 @@ DepthImage read_pfm(const std::string& path);
 // The same from bytes already read; `name` is for messages.
 DepthImage decode_pfm(std::string bytes, const std::string& name);
 
-// docs/contract.md, Checks, `image`: a pixel of `actual` passes when some pixel of
-// `expected` in its (2r+1)x(2r+1) neighbourhood (r = `radius`, default 1: 3x3)
-// is within `tolerance` (0-255) on every channel (RGBA). The image passes when
+// docs/contract.md, Checks, `image`: the comparison runs both ways. A pixel
+// position fails when the pixel of `actual` there has no pixel of `expected`
+// in its (2r+1)x(2r+1) neighbourhood (r = `radius`, default 1: 3x3) within
+// `tolerance` (0-255) on every channel (RGBA), or when the pixel of `expected`
+// there has none of `actual` in its neighbourhood: a frame that lacks a thin
+// line of the reference fails as one that adds it does. The image passes when
 // failed_fraction <= max_failed_fraction.
 struct CompareOptions {
     int tolerance = 8;
@@ -108,12 +111,12 @@ struct CompareOptions {
 struct CompareResult {
     bool passed = false;
     bool size_mismatch = false;  // then nothing else is meaningful
-    long failed_pixels = 0;
+    long failed_pixels = 0;      // positions failing either way, each counted once
     long total_pixels = 0;
     double failed_fraction = 0.0;
-    int max_channel_error = 0;  // over all pixels, to the nearest neighbour match
-    Image difference;  // failed pixels dim red -> yellow by error; passing ones dark grey (empty
-                       // without CompareOptions::difference)
+    int max_channel_error = 0;  // over all pixels and both ways, to the nearest neighbour match
+    Image difference;  // failed pixels dim red -> yellow by the larger error of the two ways;
+                       // passing ones dark grey (empty without CompareOptions::difference)
     std::vector<std::uint8_t> failed;  // width * height, bottom row first: 1 where a pixel failed
     CompareOptions options;            // the thresholds used, for summary()
     int actual_width = 0, actual_height = 0, expected_width = 0, expected_height = 0;

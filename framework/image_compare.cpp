@@ -36,6 +36,35 @@ Rgba8 heat(int error, int tolerance) {
     return {u8(96 + 159 * std::min(1.0, 2 * t)), u8(255 * std::max(0.0, 2 * t - 1)), 0, 255};
 }
 
+// The smallest channel error between `p` and a pixel of `other` within `r`
+// of (x, y), starting from `here` (the error against other's pixel at (x, y))
+// and stopping at the first row that finds one within `enough`: exact only
+// above it.
+int nearest_error(Rgba8 p, const Image& other, int x, int y, int r, int enough, int here) {
+    int best = here;
+    const int x0 = std::max(0, x - r), x1 = std::min(other.width - 1, x + r);
+    for (int ny = std::max(0, y - r); best > enough && ny <= std::min(other.height - 1, y + r);
+         ++ny) {
+        const Rgba8* row = &other.at(0, ny);
+        for (int nx = x0; nx <= x1; ++nx) best = std::min(best, channel_error(p, row[nx]));
+    }
+    return best;
+}
+
+// The error of the pixel at (x, y), which differs in place by `here` (over
+// `tolerance`), both ways: the larger of the frame's pixel's nearest error
+// among the reference's and the reference's among the frame's; exact above
+// `tolerance`. The second search stops at an error no larger than the
+// first's, and is not needed when the first found none below `here` (its
+// start).
+int pixel_error(const Image& actual, const Image& expected, int x, int y, int r, int tolerance,
+                int here) {
+    const int error = nearest_error(actual.at(x, y), expected, x, y, r, tolerance, here);
+    const int enough = std::max(tolerance, error);
+    if (here <= enough) return error;
+    return std::max(error, nearest_error(expected.at(x, y), actual, x, y, r, enough, here));
+}
+
 }  // namespace
 
 CompareResult compare_images(const Image& actual, const Image& expected,
@@ -63,26 +92,24 @@ CompareResult compare_images(const Image& actual, const Image& expected,
         const Rgba8* e_row = &expected.at(0, y);
         Rgba8* d_row = opt.difference ? &res.difference.at(0, y) : nullptr;
         if (std::memcmp(a_row, e_row, static_cast<size_t>(w) * sizeof(Rgba8)) == 0) {
-            // Every pixel equals its reference in place: an error of 0.
+            // Every pixel equals its reference in place: an error of 0 both ways.
             if (d_row)
                 for (int x = 0; x < w; ++x) d_row[x] = grey(a_row[x]);
             continue;
         }
         for (int x = 0; x < w; ++x) {
-            const Rgba8 a = a_row[x];
-            int best = channel_error(a, e_row[x]);
-            // Only pixels that differ in place need the neighbourhood search.
-            for (int ny = std::max(0, y - r); best > opt.tolerance && ny <= std::min(h - 1, y + r);
-                 ++ny)
-                for (int nx = std::max(0, x - r); nx <= std::min(w - 1, x + r); ++nx)
-                    best = std::min(best, channel_error(a, expected.at(nx, ny)));
-            res.max_channel_error = std::max(res.max_channel_error, best);
-            if (best > opt.tolerance) {
+            // Only pixels that differ in place need the neighbourhood searches.
+            const int here = channel_error(a_row[x], e_row[x]);
+            const int error = here <= opt.tolerance
+                                  ? here
+                                  : pixel_error(actual, expected, x, y, r, opt.tolerance, here);
+            res.max_channel_error = std::max(res.max_channel_error, error);
+            if (error > opt.tolerance) {
                 ++res.failed_pixels;
                 res.failed[static_cast<size_t>(y) * w + x] = 1;
-                if (d_row) d_row[x] = heat(best, opt.tolerance);
+                if (d_row) d_row[x] = heat(error, opt.tolerance);
             } else if (d_row) {
-                d_row[x] = grey(a);
+                d_row[x] = grey(a_row[x]);
             }
         }
     }

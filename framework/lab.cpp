@@ -126,6 +126,12 @@ ParamValues default_params(const RegisteredLab& lab) {
             throw Error("lab '" + lab.info.id + "' declares parameter '" + p.name + "' twice");
     std::set<int> keys;
     for (const Param& p : lab.info.params) {
+        if (p.name == kAnimate.name && p.type != ParamType::Bool)
+            throw Error("lab '" + lab.info.id + "', parameter '" + p.name + "': it is " +
+                        param_type_name(p.type) +
+                        ", and the framework reads a parameter of that name as the bool that "
+                        "animates the lab (fw::kAnimate); declare it with "
+                        "Param::boolean(fw::kAnimate, ...) or rename it");
         if (p.shortcut == 'R' || p.shortcut == 'r')
             throw Error("lab '" + lab.info.id + "', parameter '" + p.name +
                         "': key R is reserved for reloading shaders; choose another key");

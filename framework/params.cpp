@@ -209,6 +209,11 @@ ParamValues::ParamValues(std::string lab, const std::vector<Param>* params)
     }
 }
 
+bool ParamValues::declares(const std::string& name) const {
+    return std::any_of(params_->begin(), params_->end(),
+                       [&name](const Param& p) { return p.name == name; });
+}
+
 size_t ParamValues::index_of(const std::string& name) const {
     std::vector<std::string> names;
     for (size_t i = 0; i < params_->size(); ++i) {

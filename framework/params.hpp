@@ -42,6 +42,12 @@ struct ParamId {
     const char* name;
 };
 
+// The one parameter the framework reads itself: a lab that declares it
+// animates while it is on, and `lab serve` then draws every frame with the
+// time running (docs/contract.md, `lab serve`). It must be a bool: a lab
+// that declares it as another type is refused when it starts.
+constexpr ParamId<bool> kAnimate{"animate"};
+
 enum class ParamType { Float, Int, Bool, Enum, Color };
 const char* param_type_name(ParamType t);
 
@@ -181,6 +187,12 @@ public:
     nlohmann::json to_json() const;                   // every resolved value
     const std::vector<Param>& params() const { return *params_; }
     const std::string& lab() const { return lab_; }
+    // Whether the lab declares the parameter (a handle's type is checked when
+    // it is read).
+    template <class T>
+    bool declares(ParamId<T> id) const {
+        return declares(id.name);
+    }
 
 private:
     struct Value {
@@ -189,6 +201,7 @@ private:
         int choice = 0;
         glm::vec3 color{0.0f};
     };
+    bool declares(const std::string& name) const;
     size_t index_of(const std::string& name) const;
     size_t index_of(const std::string& name, ParamType want) const;
     long long choice_value(const std::string& name, std::type_index type) const;

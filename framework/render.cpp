@@ -121,6 +121,9 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
     out.color = framebuffer_->read_color();
     if (read.depth) out.depth = framebuffer_->read_depth();
     if (read.buffers) {
+        // Read back with glGetBufferSubData, which sees what shaders wrote
+        // only after this barrier; the lab's draw needs only those of its own reads.
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         // The lab sees the frame its draw() saw.
         out.buffers = lab_->buffers(params, scene_frame(registered_.info, {width, height, time}));
         check_lab_buffers(out.buffers, registered_.info.id);

@@ -13,6 +13,8 @@
 
 #include "framework/cli.hpp"
 #include "framework/error.hpp"
+#include "grading/class/class_rows.hpp"
+#include "grading/class/grade_class.hpp"
 #include "grading/commands/commands.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
@@ -30,6 +32,12 @@ using Choices = std::initializer_list<std::pair<const char*, E>>;
 const Choices<grading::ResultsFormat> kPlatforms = {
     {"gradescope", grading::ResultsFormat::Gradescope},
     {"prairielearn", grading::ResultsFormat::PrairieLearn}};
+// `course grade --format`: the platforms, and GitHub Classroom, which runs
+// `course grade` itself (the workflow of `course release --github-classroom`).
+const Choices<grading::ResultsFormat> kFormats = {
+    {"gradescope", grading::ResultsFormat::Gradescope},
+    {"prairielearn", grading::ResultsFormat::PrairieLearn},
+    {"github-classroom", grading::ResultsFormat::GitHubClassroom}};
 const Choices<grading::HiddenAs> kHiddenAs = {
     {"after_due_date", grading::HiddenAs::AfterDueDate},
     {"after_published", grading::HiddenAs::AfterPublished},
@@ -69,8 +77,9 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     grade->add_option("--timeout", g.timeout_seconds, "Seconds per lab (default 60)")
         ->check(CLI::Range(1.0, 3600.0));
     grade->add_option("--run-as", g.run_as, "Run the child as this user (when root)");
-    add_choice(grade, "--format", g.format, kPlatforms,
-               "What results.json holds (default gradescope)");
+    add_choice(grade, "--format", g.format, kFormats,
+               "What results.json holds: gradescope, prairielearn or github-classroom "
+               "(default gradescope)");
     grade->add_option("--results", g.results, "Write results.json here (default: into --out)");
     add_choice(grade, "--hidden-as", g.hidden_as, kHiddenAs, kHiddenAsHelp);
     grade->add_option("--shader-cache", g.shader_cache,
@@ -116,11 +125,14 @@ Command add_cases(CLI::App& app, grading::CasesOptions& c) {
     return {cases, [&c] { return grading::cases_command(c); }};
 }
 
-Command add_release(CLI::App& app, std::string& out) {
+Command add_release(CLI::App& app, std::string& out, grading::ReleaseOptions& options) {
     auto* release = app.add_subcommand("release", "Write the student version of the repository");
     release->add_option("--out", out, "Directory to write (must not exist or be empty)")
         ->required();
-    return {release, [&out] { return grading::release_command(out); }};
+    release->add_flag("--github-classroom", options.github_classroom,
+                      "Also write .github/workflows/classroom.yml: GitHub Classroom's autograding "
+                      "of the visible checkpoints");
+    return {release, [&out, &options] { return grading::release_command(out, options); }};
 }
 
 Command add_gradescope(CLI::App& app, std::string& out, grading::HiddenAs& hidden_as,
@@ -167,7 +179,49 @@ Command add_autograde(CLI::App& app, grading::AutogradeOptions& a) {
     return {autograde, [&a] { return grading::autograde_command(a); }};
 }
 
+// canvas.csv's options, grade-class's and merge-class's alike.
+void add_lms_options(CLI::App* cmd, grading::cls::LmsOptions& lms) {
+    cmd->add_option("--roster", lms.roster,
+                    "Canvas's gradebook export (Grades > Export): canvas.csv is written from it");
+    cmd->add_option("--canvas-column", lms.canvas_columns,
+                    "canvas.csv's assignment columns: NAME, one column for the total of the "
+                    "labs; or LAB=NAME to title a lab's column (default: a column per lab, "
+                    "titled by its id); repeat it for several labs");
+}
+
 }  // namespace
+
+Command add_grade_class(CLI::App& app, grading::cls::GradeClassOptions& c) {
+    auto* cmd = app.add_subcommand(
+        "grade-class",
+        "Grade a class's submissions (folders, archives, Gradescope's export or git "
+        "repositories) into per-student reports, grades.csv and Canvas's and Moodle's "
+        "import files");
+    cmd->add_option("SUBMISSIONS", c.submissions, "The folder of submissions")->required();
+    cmd->add_option("--out", c.out, "Where the reports and grades.csv go")->required();
+    cmd->add_option("--labs", c.labs, "The assignment's labs (default: all)")->delimiter(',');
+    cmd->add_option("--jobs", c.jobs, "Submissions graded at once (default: the cores)")
+        ->check(CLI::Range(1, 256));
+    cmd->add_option("--deadline", c.deadline,
+                    "git repositories: grade the last commit before this time "
+                    "(YYYY-MM-DDTHH:MM[:SS][Z|+HH:MM], UTC unless a zone is given); "
+                    "Gradescope's export: mark later submissions late");
+    cmd->add_option("--shard", c.shard, "K/N: grade only the K-th of N fixed slices");
+    cmd->add_option("--timeout", c.timeout, "Seconds per lab (default 60)");
+    cmd->add_option("--backend", c.backend, kBackendHelp);
+    add_lms_options(cmd, c.lms);
+    return {cmd, [&c] { return grading::cls::grade_class_command(c); }};
+}
+
+Command add_merge_class(CLI::App& app, std::string& out, std::vector<std::string>& dirs,
+                        grading::cls::LmsOptions& lms) {
+    auto* cmd = app.add_subcommand("merge-class",
+                                   "Merge the slices of grade-class --shard into one gradebook");
+    cmd->add_option("OUT", out, "Where the merged reports and grades.csv go")->required();
+    cmd->add_option("DIR", dirs, "The --out folders of the slices")->required();
+    add_lms_options(cmd, lms);
+    return {cmd, [&out, &dirs, &lms] { return grading::cls::merge_class_command(out, dirs, lms); }};
+}
 
 int main(int argc, char** argv) {
     // Frames are a megabyte each and come and go by the hundred: keep them
@@ -177,10 +231,15 @@ int main(int argc, char** argv) {
     CLI::App app{"course: grade the labs, bless references, release the student version"};
     app.require_subcommand(1);
     grading::GradeOptions grade;
+    grading::cls::GradeClassOptions grade_class;
+    std::string merge_out;
+    std::vector<std::string> merge_dirs;
+    grading::cls::LmsOptions merge_lms;
     grading::BlessOptions bless;
     grading::WarmCacheOptions warm;
     grading::CasesOptions cases;
     std::string release_out, gradescope_out, prairielearn_out;
+    grading::ReleaseOptions release;
     grading::AutogradeOptions autograde;
     grading::HiddenAs gradescope_hidden_as = grading::HiddenAs::AfterDueDate;
     std::vector<std::string> gradescope_labs;
@@ -189,10 +248,12 @@ int main(int argc, char** argv) {
         add_bless(app, bless),
         add_warm_cache(app, warm),
         add_cases(app, cases),
-        add_release(app, release_out),
+        add_release(app, release_out, release),
         add_gradescope(app, gradescope_out, gradescope_hidden_as, gradescope_labs),
         add_prairielearn(app, prairielearn_out),
-        add_autograde(app, autograde)};
+        add_autograde(app, autograde),
+        add_grade_class(app, grade_class),
+        add_merge_class(app, merge_out, merge_dirs, merge_lms)};
 
     // Every error of course, the set-up's included, exits with 2.
     const auto usage = [](const fw::Error&) { return 2; };

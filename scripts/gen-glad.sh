@@ -8,5 +8,5 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 command -v glad >/dev/null || { echo "gen-glad: 'glad' not found; apt-get install python3-glad" >&2; exit 1; }
 out="$here/third_party/glad"
 rm -rf "$out/include" "$out/src"
-glad --reproducible --quiet --api gl:core=4.3 --extensions GL_KHR_debug --out-path "$out" c
+glad --reproducible --quiet --api gl:core=4.3 --extensions GL_KHR_debug --out-path "$out" c --debug
 echo "gen-glad: wrote $out"

@@ -24,6 +24,9 @@ packages=(
   libcivetweb-dev libturbojpeg0-dev
   # The grading child's seccomp filter.
   libseccomp-dev
+  # `course grade-class`: archives, Gradescope's export metadata, git repositories,
+  # Canvas's roster (libcsv).
+  libarchive-dev libyaml-cpp-dev libgit2-dev libcsv-dev
   # The format test (scripts/check-format.sh); any version from Debian 12's 14 on.
   clang-format
   # The linker CMake picks first: links in a fraction of GNU ld's time.
@@ -34,6 +37,8 @@ packages=(
 # tests that look at the reports as a student sees them.
 if [ "${LAB_SETUP_TESTS:-0}" = 1 ]; then
   packages+=(chromium python3-html5lib)
+  # A one-node Slurm cluster for the sharded class grading's test.
+  packages+=(slurmctld slurmd slurm-client munge)
 fi
 
 preset=${LAB_PRESET:-}
@@ -47,11 +52,13 @@ fi
 # tests that build copies of the repository take most of their files from it,
 # and only if the suite's own build went through it (were it installed by
 # scripts/test.sh alone, after `scripts/grade.sh` built without it, every copy
-# would compile every file afresh). An image's build (an autograder's, the
-# container's) goes without.
+# would compile every file afresh). An autograder's image goes without. The
+# container's image (Dockerfile) keeps the cache of its own build, so that
+# the first build of a tree mounted over /labs takes the image's objects.
 if [ -d "$root/tests" ]; then
   case $preset in default | ci | egl-only | asan) packages+=(ccache) ;; esac
 fi
+if [ "$preset" = container ]; then packages+=(ccache); fi
 
 missing=()
 for p in "${packages[@]}"; do

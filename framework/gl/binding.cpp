@@ -9,30 +9,6 @@ namespace fw {
 
 namespace {
 
-GLenum buffer_binding_query(GLenum target) {
-    switch (target) {
-        case GL_COPY_READ_BUFFER:
-            return GL_COPY_READ_BUFFER_BINDING;
-        case GL_COPY_WRITE_BUFFER:
-            return GL_COPY_WRITE_BUFFER_BINDING;
-        case GL_PIXEL_PACK_BUFFER:
-            return GL_PIXEL_PACK_BUFFER_BINDING;
-        case GL_PIXEL_UNPACK_BUFFER:
-            return GL_PIXEL_UNPACK_BUFFER_BINDING;
-        case GL_ARRAY_BUFFER:
-            return GL_ARRAY_BUFFER_BINDING;
-        case GL_ELEMENT_ARRAY_BUFFER:
-            return GL_ELEMENT_ARRAY_BUFFER_BINDING;
-        case GL_UNIFORM_BUFFER:
-            return GL_UNIFORM_BUFFER_BINDING;
-        case GL_SHADER_STORAGE_BUFFER:
-            return GL_SHADER_STORAGE_BUFFER_BINDING;
-        default:
-            throw Error("bind_buffer_scoped: " + gl_enum_name(target) +
-                        " is not a buffer target it knows; add its binding query to binding.cpp");
-    }
-}
-
 GLenum framebuffer_binding_query(GLenum target) {
     if (target == GL_DRAW_FRAMEBUFFER) return GL_DRAW_FRAMEBUFFER_BINDING;
     if (target == GL_READ_FRAMEBUFFER) return GL_READ_FRAMEBUFFER_BINDING;
@@ -41,6 +17,49 @@ GLenum framebuffer_binding_query(GLenum target) {
 }
 
 }  // namespace
+
+GLint get_integer(GLenum pname) {
+    GLint v = 0;
+    glGetIntegerv(pname, &v);
+    return v;
+}
+
+GLint get_integer(GLenum pname, GLuint index) {
+    GLint v = 0;
+    glGetIntegeri_v(pname, index, &v);
+    return v;
+}
+
+GLenum buffer_binding_query(GLenum target) {
+    switch (target) {
+        case GL_ARRAY_BUFFER:
+            return GL_ARRAY_BUFFER_BINDING;
+        case GL_ELEMENT_ARRAY_BUFFER:
+            return GL_ELEMENT_ARRAY_BUFFER_BINDING;
+        case GL_UNIFORM_BUFFER:
+            return GL_UNIFORM_BUFFER_BINDING;
+        case GL_SHADER_STORAGE_BUFFER:
+            return GL_SHADER_STORAGE_BUFFER_BINDING;
+        case GL_TRANSFORM_FEEDBACK_BUFFER:
+            return GL_TRANSFORM_FEEDBACK_BUFFER_BINDING;
+        case GL_ATOMIC_COUNTER_BUFFER:
+            return GL_ATOMIC_COUNTER_BUFFER_BINDING;
+        case GL_COPY_READ_BUFFER:
+            return GL_COPY_READ_BUFFER_BINDING;
+        case GL_COPY_WRITE_BUFFER:
+            return GL_COPY_WRITE_BUFFER_BINDING;
+        case GL_PIXEL_PACK_BUFFER:
+            return GL_PIXEL_PACK_BUFFER_BINDING;
+        case GL_PIXEL_UNPACK_BUFFER:
+            return GL_PIXEL_UNPACK_BUFFER_BINDING;
+        case GL_DRAW_INDIRECT_BUFFER:
+            return GL_DRAW_INDIRECT_BUFFER_BINDING;
+        case GL_DISPATCH_INDIRECT_BUFFER:
+            return GL_DISPATCH_INDIRECT_BUFFER_BINDING;
+        default:
+            return 0;
+    }
+}
 
 ScopedBinding::ScopedBinding(GLenum target, GLenum query, GLint value, Apply apply)
     : target_(target), apply_(apply) {
@@ -51,7 +70,11 @@ ScopedBinding::ScopedBinding(GLenum target, GLenum query, GLint value, Apply app
 ScopedBinding::~ScopedBinding() { apply_(target_, previous_); }
 
 ScopedBinding bind_buffer_scoped(GLenum target, GLuint id) {
-    return {target, buffer_binding_query(target), static_cast<GLint>(id),
+    const GLenum query = buffer_binding_query(target);
+    if (query == 0)
+        throw Error("bind_buffer_scoped: " + gl_enum_name(target) +
+                    " is not a buffer target it knows; add its binding query to binding.cpp");
+    return {target, query, static_cast<GLint>(id),
             [](GLenum t, GLint v) { glBindBuffer(t, static_cast<GLuint>(v)); }};
 }
 

@@ -32,10 +32,19 @@ private:
     Apply apply_;
 };
 
+// The query that reads which buffer is bound to `target`
+// (GL_ARRAY_BUFFER_BINDING for GL_ARRAY_BUFFER): for GL_ARRAY_BUFFER,
+// GL_ELEMENT_ARRAY_BUFFER, GL_UNIFORM_BUFFER, GL_SHADER_STORAGE_BUFFER,
+// GL_TRANSFORM_FEEDBACK_BUFFER, GL_ATOMIC_COUNTER_BUFFER, GL_COPY_READ_BUFFER,
+// GL_COPY_WRITE_BUFFER, GL_PIXEL_PACK_BUFFER, GL_PIXEL_UNPACK_BUFFER,
+// GL_DRAW_INDIRECT_BUFFER and GL_DISPATCH_INDIRECT_BUFFER; 0 for another enum.
+GLenum buffer_binding_query(GLenum target);
+
+// glGetIntegerv(pname) and glGetIntegeri_v(pname, index), one value each.
+GLint get_integer(GLenum pname);
+GLint get_integer(GLenum pname, GLuint index);
 // glBindBuffer(target, id) for the scope. `target` is one of the targets
-// below (GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, GL_PIXEL_PACK_BUFFER,
-// GL_PIXEL_UNPACK_BUFFER, GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER,
-// GL_UNIFORM_BUFFER, GL_SHADER_STORAGE_BUFFER); another throws fw::Error.
+// buffer_binding_query knows; another throws fw::Error.
 ScopedBinding bind_buffer_scoped(GLenum target, GLuint id);
 // glBindTexture(GL_TEXTURE_2D, id) on the active texture unit, for the scope.
 ScopedBinding bind_texture_2d_scoped(GLuint id);

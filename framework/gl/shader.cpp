@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <vector>
@@ -48,6 +49,12 @@ bool ends_with(const std::string& s, const std::string& suffix) {
            s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+// set_shader_overrides: by the path a program names, the text compiled instead.
+std::map<std::string, std::string>& overrides() {
+    static std::map<std::string, std::string> texts;
+    return texts;
+}
+
 std::vector<std::string> split_lines(const std::string& text) {
     std::vector<std::string> lines;
     std::istringstream in(text);
@@ -82,6 +89,10 @@ std::string shader_dir() {
 std::string shader_path(const std::string& relative) {
     if (!relative.empty() && relative[0] == '/') return relative;
     return shader_dir() + "/" + relative;
+}
+
+void set_shader_overrides(std::map<std::string, std::string> texts) {
+    overrides() = std::move(texts);
 }
 
 std::string display_path(const std::string& path) {
@@ -186,19 +197,26 @@ std::string expand_includes(const std::string& text, const std::string& path,
 Shader Shader::from_file(const std::string& path) {
     const Stage stage = stage_from_path(path);
     const std::string resolved = shader_path(path);
-    std::ifstream in(resolved, std::ios::binary);
-    std::ostringstream text;
-    if (std::filesystem::is_regular_file(resolved) && in) text << in.rdbuf();
-    if (!std::filesystem::is_regular_file(resolved) || !in || in.bad())
-        throw ShaderError(
-            display_path(resolved),
-            "cannot read shader file '" + resolved + "'" +
-                (resolved == path ? std::string()
-                                  : " ('" + path + "' in the shader directory " + shader_dir() +
-                                        "; LAB_SHADER_DIR overrides it)"));
+    std::string text;
+    // A text in place of the file: its includes still come from the file's folder.
+    if (const auto stand_in = overrides().find(path); stand_in != overrides().end()) {
+        text = stand_in->second;
+    } else {
+        std::ifstream in(resolved, std::ios::binary);
+        std::ostringstream read;
+        if (std::filesystem::is_regular_file(resolved) && in) read << in.rdbuf();
+        if (!std::filesystem::is_regular_file(resolved) || !in || in.bad())
+            throw ShaderError(
+                display_path(resolved),
+                "cannot read shader file '" + resolved + "'" +
+                    (resolved == path ? std::string()
+                                      : " ('" + path + "' in the shader directory " + shader_dir() +
+                                            "; LAB_SHADER_DIR overrides it)"));
+        text = read.str();
+    }
     std::vector<IncludedFile> included;
-    const std::string source = expand_includes(text.str(), resolved, included);
-    Shader shader = compile(stage, source, display_path(resolved), text.str(), included);
+    const std::string source = expand_includes(text, resolved, included);
+    Shader shader = compile(stage, source, display_path(resolved), text, included);
     shader.path_ = resolved;
     return shader;
 }

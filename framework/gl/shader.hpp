@@ -11,6 +11,7 @@
 
 #include <glad/gl.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,14 @@ Stage stage_from_path(const std::string& path);
 std::string shader_dir();
 // `relative` resolved against shader_dir(); an absolute path is returned as is.
 std::string shader_path(const std::string& relative);
+
+// Texts that stand in for shader files, by the path relative to shader_dir()
+// that a program names ("07_framebuffer_ops/cutout.frag"): Shader::from_file
+// compiles the text instead of reading the file, and takes its includes from
+// the file's own folder. For `lab grade-child`, which renders a job with one
+// of the course's files in place of the student's (its "shader_overrides").
+// Replaces the texts set before; an empty map ends them.
+void set_shader_overrides(std::map<std::string, std::string> texts);
 
 // A file pasted into a shader by `#include "name"` (see Shader::from_file).
 struct IncludedFile {
@@ -66,8 +75,10 @@ public:
     // Reads and compiles `path` (absolute, or relative to shader_dir()); the
     // stage comes from its extension. `#include "shared.glsl"` lines paste a
     // file from the same folder: a lab's header of names that its C++
-    // includes too (attribute locations, enum values). Throws fw::Error
-    // naming the path if a file cannot be read or does not compile.
+    // includes too (attribute locations, enum values). A text set by
+    // set_shader_overrides for `path` is compiled instead of the file.
+    // Throws fw::Error naming the path if a file cannot be read or does not
+    // compile.
     static Shader from_file(const std::string& path);
     // Compiles `source`; `name` stands for the file in messages and labels.
     static Shader from_source(Stage stage, const std::string& source, const std::string& name);

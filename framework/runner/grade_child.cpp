@@ -8,10 +8,15 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 
 #include "framework/error.hpp"
+#include "framework/gl/calls.hpp"
+#include "framework/gl/record.hpp"
+#include "framework/gl/shader.hpp"
+#include "framework/gl/usage.hpp"
 #include "framework/image.hpp"
 #include "framework/lab.hpp"
 #include "framework/lab_buffers.hpp"
@@ -78,13 +83,22 @@ json read_job(const std::string& path) {
 
 // One render: the checkpoint's parameters over the defaults, then the frame.
 void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job,
-                const std::string& base) {
+                const std::string& base, gl_record::Recorder* recorder) {
     ParamValues params = default_params(lab);
     const json given = job.value("params", json::object());
     for (const auto& [key, value] : given.items()) params.set_json(key, value);
     const ReadBack read{job.value("depth", false), job.value("buffers", false)};
-    RenderOutput out =
-        renderer.render(params, job.value("width", 512), job.value("height", 512), 0.0, read);
+    // "record": what each draw was told (framework/gl/record.hpp).
+    const bool record = recorder && job.value("record", false);
+    if (record) recorder->begin();
+    RenderOutput out;
+    try {
+        out = renderer.render(params, job.value("width", 512), job.value("height", 512), 0.0, read);
+    } catch (...) {
+        if (record) recorder->end();
+        throw;
+    }
+    if (record) put_output(base + ".record.json", gl_record::record_text(recorder->end()));
     // Raw pixels: course judges them and encodes only what a report shows.
     put_output(base + ".pam", encode_pam(out.color));
     if (read.depth) put_output(base + ".pfm", encode_pfm(out.depth));
@@ -113,6 +127,106 @@ json call_units(const RegisteredLab& lab, const json& calls) {
     return units;
 }
 
+// The job's "shader_overrides" ({"NN_name/file.frag": "its text"}), in
+// force while the job's programs are built: the course's file in place of
+// the student's (docs/contract.md, Which file is wrong). Ended with the job.
+class ShaderOverrides {
+public:
+    ShaderOverrides(const json& job, const std::string& path) {
+        const json given = job.value("shader_overrides", json::object());
+        if (!given.is_object())
+            throw Error("job file '" + path + "': \"shader_overrides\" must be an object");
+        std::map<std::string, std::string> texts;
+        for (const auto& [file, text] : given.items()) {
+            if (!text.is_string())
+                throw Error("job file '" + path + "': \"shader_overrides\" of '" + file +
+                            "' must be the file's text, a string");
+            texts[file] = text.get<std::string>();
+        }
+        set_shader_overrides(std::move(texts));
+    }
+    ~ShaderOverrides() { set_shader_overrides({}); }
+    ShaderOverrides(const ShaderOverrides&) = delete;
+    ShaderOverrides& operator=(const ShaderOverrides&) = delete;
+};
+
+// The job's offscreen context and the lab's renderer in it (the renderer
+// ends first); where either cannot be made, `init_error` says why.
+struct Rendering {
+    std::unique_ptr<OffscreenContext> context;
+    std::unique_ptr<LabRenderer> renderer;
+    json context_json = nullptr;
+    std::string init_error;
+};
+
+Rendering start_rendering(const RegisteredLab& lab, const std::string& backend) {
+    Rendering out;
+    try {
+        out.context =
+            create_offscreen_context(backend.empty() ? backend_from_env() : parse_backend(backend));
+        const ContextInfo& info = out.context->info();
+        out.context_json = {{"backend", info.backend},
+                            {"platform", info.platform},
+                            {"gl_version", info.gl_version},
+                            {"gl_renderer", info.gl_renderer}};
+        out.renderer = std::make_unique<LabRenderer>(lab, info);
+    } catch (const Error& e) {
+        out.init_error = e.what();
+    }
+    return out;
+}
+
+// Each render in turn (none renders without `renderer`: `init_error` says
+// why): its outputs or NAME.error.txt, and NAME.usage.json where it asks
+// (framework/gl/usage.hpp).
+void render_all(LabRenderer* renderer, const std::string& init_error, const RegisteredLab& lab,
+                const json& renders, const std::string& out_dir, gl_record::Recorder* recorder,
+                gl_usage::Checker* usage) {
+    for (const json& r : renders) {
+        std::string base = out_dir + "/" + r.value("name", "unnamed");
+        if (usage) usage->begin_render();
+        try {
+            if (!renderer) throw Error(init_error);
+            render_one(*renderer, lab, r, base, recorder);
+        } catch (const std::exception& e) {
+            put_output(base + ".error.txt", std::string(e.what()) + "\n");
+        }
+        // Also for a render that failed: what it did up to there.
+        if (usage && r.value("usage", false))
+            put_output(base + ".usage.json", gl_usage::findings_json(usage->end_render()));
+    }
+}
+
+bool any_render_asks(const json& renders, const char* output) {
+    for (const json& r : renders)
+        if (r.value(output, false)) return true;
+    return false;
+}
+
+// The observers of the lab's GL calls that its renders ask for, each passed
+// every call by one Fanout from the lab's start (before its programs are
+// made) to its end.
+struct Observers {
+    gl_calls::Fanout fanout;
+    std::unique_ptr<gl_record::Recorder> recorder;
+    std::unique_ptr<gl_usage::Checker> usage;
+
+    explicit Observers(const json& renders) {
+        if (any_render_asks(renders, "record")) {
+            recorder = std::make_unique<gl_record::Recorder>();
+            fanout.add(recorder.get());
+        }
+        if (any_render_asks(renders, "usage")) {
+            usage = std::make_unique<gl_usage::Checker>();
+            fanout.add(usage.get());
+        }
+        if (!fanout.empty()) gl_calls::observe(&fanout);
+    }
+    ~Observers() { gl_calls::observe(nullptr); }
+    Observers(const Observers&) = delete;
+    Observers& operator=(const Observers&) = delete;
+};
+
 }  // namespace
 
 void grade_child(const std::string& job_path, const std::string& out_dir,
@@ -123,36 +237,17 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
     json job = read_job(job_path);
     const RegisteredLab& lab = find_lab(job.value("lab", ""));
+    const ShaderOverrides overrides(job, job_path);
 
     // Unit calls first: they need no context, so a broken shader costs them nothing.
     write_json(out_dir + "/units.json", call_units(lab, job.value("units", json::array())));
 
-    json context_json = nullptr;
-    std::string init_error;
-    std::unique_ptr<OffscreenContext> context;
-    std::unique_ptr<LabRenderer> renderer;
-    try {
-        context =
-            create_offscreen_context(backend.empty() ? backend_from_env() : parse_backend(backend));
-        const ContextInfo& info = context->info();
-        context_json = {{"backend", info.backend},
-                        {"platform", info.platform},
-                        {"gl_version", info.gl_version},
-                        {"gl_renderer", info.gl_renderer}};
-        renderer = std::make_unique<LabRenderer>(lab, info);
-    } catch (const Error& e) {
-        init_error = e.what();
-    }
     const json renders = job.value("renders", json::array());
-    for (const json& r : renders) {
-        std::string base = out_dir + "/" + r.value("name", "unnamed");
-        try {
-            if (!renderer) throw Error(init_error);
-            render_one(*renderer, lab, r, base);
-        } catch (const std::exception& e) {
-            put_output(base + ".error.txt", std::string(e.what()) + "\n");
-        }
-    }
+    const Observers observers(renders);
+
+    auto [context, renderer, context_json, init_error] = start_rendering(lab, backend);
+    render_all(renderer.get(), init_error, lab, renders, out_dir, observers.recorder.get(),
+               observers.usage.get());
     // Programs that failed to build: the renders that drew with them failed
     // with the compiler's message; course names the files in the lab's status.
     json shader_errors = json::array();

@@ -6,14 +6,19 @@
 // JOB.json (written by `course`):
 //   {"lab": "transforms",
 //    "renders": [{"name": "trs_default", "params": {"angle": 30}, "width": 512, "height": 512,
-//                 "depth": false, "buffers": false}],
-//    "units":   [{"id": "u0", "function": "translate", "args": [[1, 2, 3]]}]}
+//                 "depth": false, "buffers": false, "usage": false}],
+//    "units":   [{"id": "u0", "function": "translate", "args": [[1, 2, 3]]}],
+//    "shader_overrides": {"01_transforms/transforms.vert": "#version 430 ..."}}
+//   ("shader_overrides", optional: texts compiled in place of those files of
+//   the shader directory for this job, fw::set_shader_overrides)
 //
 // DIR afterwards:
 //   NAME.pam, NAME.stats.json             per render (NAME.error.txt instead on failure)
 //   NAME.pfm                              per render whose entry has "depth": true
 //   NAME.buffers.json                     per render whose entry has "buffers": true
 //                                         (Lab::buffers, framework/lab_buffers.hpp)
+//   NAME.usage.json                       per render whose entry has "usage": true, also
+//                                         for one that failed (framework/gl/usage.hpp)
 //   units.json                            {"u0": {"result": ...} | {"error": "..."}}
 //   child.json                            written last: {"complete": true, "context": {...}}
 //

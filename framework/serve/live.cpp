@@ -42,11 +42,7 @@ json describe_lab(const RegisteredLab& lab, const ContextInfo& context) {
             {"max_side", kMaxServeSide}};
 }
 
-bool animates(const ParamValues& params) {
-    for (const Param& p : params.params())
-        if (p.name == "animate" && p.type == ParamType::Bool && params.flag(p.name)) return true;
-    return false;
-}
+bool animates(const ParamValues& params) { return params.declares(kAnimate) && params[kAnimate]; }
 
 }  // namespace
 

@@ -13,7 +13,9 @@
 
 #include "framework/error.hpp"
 #include "grading/commands/commands.hpp"
+#include "grading/commands/lab_sources.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/state_diff.hpp"
 
 namespace grading {
 
@@ -38,6 +40,7 @@ int bless_command(const BlessOptions& options) {
     std::vector<LabData> labs = select_labs(discover_labs(source_root()), options.labs);
     for (LabData& lab : labs) parse_checks(lab);
     const std::string lab_binary = resolve_lab_binary(options.lab_binary);
+    require_lab_up_to_date(lab_binary, false, options.labs);
     ChildLimits limits;
     limits.timeout_seconds = 300.0;  // every image checkpoint of a lab in one child
 
@@ -55,11 +58,14 @@ int bless_command(const BlessOptions& options) {
                          indented_tail(child.run.log, 20).c_str());
             return 2;
         }
-        // Every image first: a lab is blessed whole or not at all.
+        // Every image and record first: a lab is blessed whole or not at all.
         std::vector<fw::Image> images(plan.renders.size());
+        std::vector<std::string> records(plan.renders.size());
         for (size_t i = 0; i < plan.renders.size(); ++i) {
             std::string why;
-            if (!read_rendered(*child.outputs, plan.renders[i], images[i], why)) {
+            if (!read_rendered(*child.outputs, plan.renders[i], images[i], why) ||
+                !child.outputs->read(plan.renders[i].checkpoint + ".record.json", 16 * kMiB,
+                                     records[i], why)) {
                 std::fprintf(stderr,
                              "course: bless: %s, checkpoint '%s': %s; nothing written for '%s'\n",
                              lab.id.c_str(), plan.renders[i].checkpoint.c_str(), why.c_str(),
@@ -72,6 +78,8 @@ int bless_command(const BlessOptions& options) {
         for (size_t i = 0; i < plan.renders.size(); ++i) {
             const std::string rel = lab.reference(plan.renders[i].checkpoint);
             fw::write_png(lab.root + "/" + rel, images[i]);
+            // What each draw was told, beside it (state_diff.hpp).
+            write_reference_record(lab, plan.renders[i].checkpoint, records[i]);
             std::printf("wrote %s (%dx%d, %s)\n", rel.c_str(), images[i].width, images[i].height,
                         backend.c_str());
         }
@@ -83,6 +91,7 @@ int warm_cache_command(const WarmCacheOptions& options) {
     std::vector<LabData> labs = select_labs(discover_labs(source_root()), options.labs);
     for (LabData& lab : labs) parse_checks(lab);
     const std::string lab_binary = resolve_lab_binary(options.lab_binary);
+    require_lab_up_to_date(lab_binary, false, options.labs);
     std::error_code ec;
     std::filesystem::create_directories(options.dir, ec);
     if (ec || !std::filesystem::is_directory(options.dir))

@@ -18,8 +18,8 @@ struct GradeOptions {
     int jobs = 1;
     double timeout_seconds = 60.0;
     std::string run_as;  // --run-as USER (root only)
-    // --format: what results.json holds, gradescope or prairielearn; --results:
-    // where it goes (empty: into `out`).
+    // --format: what results.json holds, gradescope, prairielearn or
+    // github-classroom; --results: where it goes (empty: into `out`).
     ResultsFormat format = ResultsFormat::Gradescope;
     std::string results;
     // --hidden-as: the visibility of a hidden checkpoint's test in

@@ -21,7 +21,10 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/commands/commands.hpp"
+#include "grading/commands/lab_sources.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/file_isolation.hpp"
+#include "grading/judge/state_diff.hpp"
 #include "grading/report/reports.hpp"
 #include "grading/run/parallel.hpp"
 #include "grading/sandbox/isolation.hpp"
@@ -214,10 +217,12 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
         jobs.push_back(plans.back().job);
     }
     std::vector<LabResult> results(labs.size());
+    std::vector<char> ran(labs.size(), 0);  // the lab's child ran to its end
     using Ended = std::pair<size_t, LabChild>;
     Pipeline<Ended> judging([&](Ended& e) {
         results[e.first] =
             judge_child(*labs[e.first], plans[e.first], e.second, setup.out, threads());
+        ran[e.first] = e.second.run.ok();
     });
     const LabReady ended = [&judging](size_t i, LabChild&& child) {
         judging.push({i, std::move(child)});
@@ -225,6 +230,11 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
     run_lab_children(setup.lab_binary, jobs, setup.backend, setup.limits, setup.user, setup.cache,
                      ended);
     judging.finish();
+    // Which file is wrong, for a lab whose frames failed (file_isolation.hpp):
+    // once its child is done, so that a worker runs one child at a time.
+    const ChildSpawn spawn{setup.lab_binary, setup.backend, setup.limits, setup.user, setup.cache};
+    for (size_t i = 0; i < labs.size(); ++i)
+        if (ran[i]) isolate_shader_mistakes(*labs[i], plans[i], results[i].checks, spawn);
     return results;
 }
 
@@ -240,15 +250,27 @@ private:
     std::atomic<int>& count_;
 };
 
+// The named labs of `all`, their checks parsed and their reference records
+// checked (a usage error names what is wrong before any child runs).
+std::vector<LabData> labs_to_grade(const std::vector<LabData>& all,
+                                   const std::vector<std::string>& names) {
+    std::vector<LabData> labs = select_labs(all, names);
+    for (LabData& lab : labs) {
+        parse_checks(lab);
+        check_reference_records(lab);
+    }
+    return labs;
+}
+
 }  // namespace
 
 int grade_command(const GradeOptions& options) {
     const RunClock timing;
     const std::vector<LabData> all = discover_labs(source_root());
-    std::vector<LabData> labs = select_labs(all, options.labs);
-    for (LabData& lab : labs) parse_checks(lab);
+    std::vector<LabData> labs = labs_to_grade(all, options.labs);
     ChildSetup setup;
     setup.lab_binary = resolve_lab_binary(options.lab_binary);
+    require_lab_up_to_date(setup.lab_binary, true, options.labs);
     setup.backend = options.backend;
     setup.out = options.out;
     std::optional<RunAsUser> user;

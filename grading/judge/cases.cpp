@@ -69,14 +69,16 @@ BufferCheck buffer_of(const json& j) {
 
 json record_unit_cases(const LabData& lab, unsigned seed, int max_random, RecordFor recorded_for) {
     LabData parsed = lab;
-    if (parsed.checks.size() != parsed.file.checkpoints.size()) parse_checks(parsed);
+    if (parsed.checks.size() != parsed.file.checkpoints.size() ||
+        parsed.visibility.size() != parsed.file.checkpoints.size())
+        parse_checks(parsed);
     std::seed_seq seq{seed};
     std::mt19937 rng(seq);
     std::map<std::string, std::unique_ptr<ReferenceRecorder>> recorders;
     json checks = json::array();
     for (size_t k = 0; k < parsed.file.checkpoints.size(); ++k) {
         const fw::Checkpoint& cp = parsed.file.checkpoints[k];
-        if (cp.visibility == "hidden" && recorded_for == RecordFor::StudentCopy)
+        if (parsed.visibility[k] == Visibility::Hidden && recorded_for == RecordFor::StudentCopy)
             continue;  // not in the student's copy
         for (size_t i = 0; i < parsed.checks[k].size(); ++i) {
             if (parsed.checks[k][i].kind == CheckKind::Buffer)

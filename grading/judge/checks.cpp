@@ -11,6 +11,8 @@
 #include "grading/judge/cases.hpp"
 #include "grading/judge/check_where.hpp"
 #include "grading/judge/judge_buffer.hpp"
+#include "grading/judge/state_diff.hpp"
+#include "grading/judge/state_words.hpp"
 #include "grading/units/reference.hpp"
 
 namespace grading {
@@ -35,8 +37,9 @@ const std::map<CheckKind, std::set<std::string>> kFields = {
     {CheckKind::Unit, {"function", "random", "edge", "tolerance"}},
     {CheckKind::Forbidden, {"files", "names", "rule"}},
     {CheckKind::Buffer, {"buffer", "reference", "tolerance"}},
+    {CheckKind::Portable, {}},
 };
-const char* const kKinds = "image, probe, stat, unit, forbidden, buffer";
+const char* const kKinds = "image, probe, stat, unit, forbidden, buffer, portable";
 
 bool is_size(const json& v) {
     return v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer();
@@ -238,8 +241,65 @@ Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, co
                 found != recorded.end() && found->second.buffer ? &*found->second.buffer : nullptr);
             break;
         }
+        case CheckKind::Portable:
+            c.spec = PortableCheck{};
+            break;
     }
     return c;
+}
+
+// The unit checks of checkpoint `cp` in the plan: each check's cases, and
+// a call of the job for each case, numbered from `next_id`.
+void plan_units(LabPlan& plan, const std::string& lab_id, const fw::Checkpoint& cp,
+                const std::vector<Check>& checks, std::mt19937& rng, int& next_id) {
+    for (size_t i = 0; i < checks.size(); ++i) {
+        if (checks[i].kind != CheckKind::Unit) continue;
+        const UnitCheck& check = checks[i].as<UnitCheck>();
+        const ReferenceUnit& ref = find_reference(lab_id, check.function);
+        UnitPlan unit{cp.name, i, {}};
+        // Edge cases first: their failures, shown first, are the easiest to read.
+        for (const json& args : check.edge)
+            unit.cases.push_back({"u" + std::to_string(next_id++), args, true});
+        if (check.recorded) {
+            for (const json& args : *check.recorded)
+                unit.cases.push_back({"u" + std::to_string(next_id++), args, false});
+        } else {
+            for (int n = 0; n < check.random; ++n)
+                unit.cases.push_back(
+                    {"u" + std::to_string(next_id++), random_arguments(ref, rng), false});
+        }
+        for (const UnitCase& c : unit.cases)
+            plan.job["units"].push_back(
+                {{"id", c.id}, {"function", ref.function.name}, {"args", c.args}});
+        plan.units.push_back(std::move(unit));
+    }
+}
+
+// The job's entry for the checkpoint's render; null when none of its checks
+// renders (for blessing: when it has no image check).
+json render_entry(const LabData& lab, const fw::Checkpoint& cp, const std::vector<Check>& checks,
+                  PlanFor what) {
+    bool render = false, depth = false, buffers = false, usage = false;
+    for (const Check& check : checks) {
+        render =
+            render || (what == PlanFor::Grading ? check.renders() : check.kind == CheckKind::Image);
+        depth = depth || (what == PlanFor::Grading && check.kind == CheckKind::Probe &&
+                          check.as<ProbeCheck>().reads_depth());
+        buffers = buffers || (what == PlanFor::Grading && check.kind == CheckKind::Buffer);
+        usage = usage || (what == PlanFor::Grading && check.kind == CheckKind::Portable);
+    }
+    if (!render) return nullptr;
+    auto [width, height] = render_size(cp);
+    // "depth": a check reads the depth buffer, so the child writes
+    // NAME.pfm; "buffers": a check reads the lab's buffers (NAME.buffers.json);
+    // "usage": a check reads the render's GL usage (NAME.usage.json).
+    json entry = {{"name", cp.name}, {"params", cp.params}, {"width", width}, {"height", height},
+                  {"depth", depth},  {"buffers", buffers},  {"usage", usage}};
+    // "record": what each draw was told, for the state diff
+    // (state_diff.hpp): the solution's when blessing, a
+    // submission's where the checkpoint has the solution's.
+    if (what == PlanFor::Blessing || has_reference_record(lab, cp.name)) entry["record"] = true;
+    return entry;
 }
 
 }  // namespace
@@ -253,8 +313,10 @@ std::string LabData::reference_dir() const { return root + "/labs/" + dir + "/re
 void parse_checks(LabData& lab) {
     const RecordedChecks recorded = load_unit_cases(lab);
     lab.checks.assign(lab.file.checkpoints.size(), {});
+    lab.visibility.clear();
     for (size_t k = 0; k < lab.file.checkpoints.size(); ++k) {
         const fw::Checkpoint& cp = lab.file.checkpoints[k];
+        lab.visibility.push_back(visibility_named(cp.visibility));
         if (!cp.checks.is_array()) continue;  // read_checkpoint_file has checked this
         for (size_t i = 0; i < cp.checks.size(); ++i)
             lab.checks[k].push_back(parse_check(lab, cp, i, cp.checks[i], recorded));
@@ -262,6 +324,10 @@ void parse_checks(LabData& lab) {
     std::vector<std::string> names;
     for (const fw::Checkpoint& cp : lab.file.checkpoints) names.push_back(cp.name);
     lab.mistake_frames = read_mistake_frames(lab.root, lab.dir, names);
+    lab.parts = read_parts(lab.file);
+    lab.state_words = read_state_words(lab.root, lab.dir, lab.file);
+    check_part_places(lab.root, lab.file.path, lab.parts);
+    read_starting_file(lab.root, lab.dir, lab.parts);
 }
 
 LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
@@ -276,48 +342,14 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
     for (size_t k = 0; k < lab.file.checkpoints.size(); ++k) {
         const fw::Checkpoint& cp = lab.file.checkpoints[k];
         const std::vector<Check>& checks = lab.checks.at(k);
-        bool render = false, depth = false, buffers = false;
-        for (const Check& check : checks) {
-            render = render ||
-                     (what == PlanFor::Grading ? check.renders() : check.kind == CheckKind::Image);
-            depth = depth || (what == PlanFor::Grading && check.kind == CheckKind::Probe &&
-                              check.as<ProbeCheck>().reads_depth());
-            buffers = buffers || (what == PlanFor::Grading && check.kind == CheckKind::Buffer);
-        }
-        if (render) {
-            auto [width, height] = render_size(cp);
-            plan.renders.push_back({cp.name, width, height});
-            // "depth": a check reads the depth buffer, so the child writes
-            // NAME.pfm; "buffers": a check reads the lab's buffers (NAME.buffers.json).
-            plan.job["renders"].push_back({{"name", cp.name},
-                                           {"params", cp.params},
-                                           {"width", width},
-                                           {"height", height},
-                                           {"depth", depth},
-                                           {"buffers", buffers}});
+        const json render = render_entry(lab, cp, checks, what);
+        if (!render.is_null()) {
+            plan.renders.push_back(
+                {cp.name, render["width"].get<int>(), render["height"].get<int>()});
+            plan.job["renders"].push_back(render);
         }
         if (what != PlanFor::Grading) continue;
-        for (size_t i = 0; i < checks.size(); ++i) {
-            if (checks[i].kind != CheckKind::Unit) continue;
-            const UnitCheck& check = checks[i].as<UnitCheck>();
-            const ReferenceUnit& ref = find_reference(lab.id, check.function);
-            UnitPlan unit{cp.name, i, {}};
-            // Edge cases first: their failures, shown first, are the easiest to read.
-            for (const json& args : check.edge)
-                unit.cases.push_back({"u" + std::to_string(next_id++), args, true});
-            if (check.recorded) {
-                for (const json& args : *check.recorded)
-                    unit.cases.push_back({"u" + std::to_string(next_id++), args, false});
-            } else {
-                for (int n = 0; n < check.random; ++n)
-                    unit.cases.push_back(
-                        {"u" + std::to_string(next_id++), random_arguments(ref, rng), false});
-            }
-            for (const UnitCase& c : unit.cases)
-                plan.job["units"].push_back(
-                    {{"id", c.id}, {"function", ref.function.name}, {"args", c.args}});
-            plan.units.push_back(std::move(unit));
-        }
+        plan_units(plan, lab.id, cp, checks, rng, next_id);
     }
     return plan;
 }

@@ -23,6 +23,8 @@
 //          the lab (grading/units/buffer_reference.hpp), "tolerance" (absolute,
 //          per float, default 1e-4); passes when the buffer holds the
 //          reference's elements, each float within the tolerance
+//   portable  no fields; passes when the child found no GL usage that the GL
+//          4.3 specification leaves undefined or forbids (framework/gl/usage.hpp)
 #pragma once
 
 #include <array>
@@ -35,6 +37,7 @@
 #include "framework/checkpoints.hpp"
 #include "framework/image.hpp"
 #include "grading/judge/known_mistakes.hpp"
+#include "grading/judge/starting_code.hpp"
 #include "grading/results/results.hpp"
 #include "grading/run/child.hpp"
 #include "grading/run/repository.hpp"
@@ -104,10 +107,16 @@ struct BufferCheck {
     std::vector<KnownBufferMistake> mistakes;
 };
 
+// A portable check has nothing to set: what it reads is the render's record
+// of its GL usage (NAME.usage.json).
+struct PortableCheck {};
+
 struct Check {
     CheckKind kind = CheckKind::Image;
     double points = 0.0;
-    std::variant<ImageCheck, ProbeCheck, StatCheck, UnitCheck, ForbiddenCheck, BufferCheck> spec;
+    std::variant<ImageCheck, ProbeCheck, StatCheck, UnitCheck, ForbiddenCheck, BufferCheck,
+                 PortableCheck>
+        spec;
     template <class T>
     const T& as() const {
         return std::get<T>(spec);
@@ -122,10 +131,17 @@ struct LabData {
     std::string root;     // the repository (source_root())
     std::string sources;  // the student's source files (sources_root(root))
     fw::CheckpointFile file;
-    // Each checkpoint's checks, parsed (parse_checks), in the file's order.
+    // Each checkpoint's checks and its visibility, parsed (parse_checks), in
+    // the file's order.
     std::vector<std::vector<Check>> checks;
+    std::vector<Visibility> visibility;
     // The frames of mistakes the course knows, per checkpoint (known_mistakes.hpp).
     MistakeFrames mistake_frames;
+    // Where the sheet's parts are written (the file's "parts", starting_code.hpp).
+    std::vector<PartPlace> parts;
+    // The sheet's words for the state diff (state_words.hpp), checked; null
+    // when the lab has none.
+    nlohmann::json state_words;
 
     // "labs/00_pipeline/reference/NAME.png", relative to root (for messages).
     std::string reference(const std::string& checkpoint) const;
@@ -138,8 +154,11 @@ std::vector<LabData> discover_labs(const std::string& root);
 std::vector<LabData> select_labs(const std::vector<LabData>& all,
                                  const std::vector<std::string>& names);
 
-// Parses every check of the lab into lab.checks, after loading the lab's
-// recorded unit cases where it has them (cases.json, cases.hpp);
+// Parses every check of the lab into lab.checks and each checkpoint's
+// visibility into lab.visibility, after loading the lab's
+// recorded unit cases where it has them (cases.json, cases.hpp), and the
+// places of the sheet's parts into lab.parts, with their starting hashes
+// where the lab has a starting file (starting.json, starting_code.hpp);
 // throws fw::UsageError naming the file, the checkpoint, the check and the
 // field.
 void parse_checks(LabData& lab);
@@ -179,6 +198,12 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
 // "shader error in shaders/04_geometry/explode.geom" when the child reports
 // programs that failed to build (child.json's "shader_errors"); else empty.
 std::string shader_error_status(const ChildOutputs& outputs);
+
+// Whether every check of `render`'s checkpoint that judges its frame (image,
+// probe, stat, buffer) passes on the frame in `outputs`, judged as
+// judge_lab judges it, writing no report file.
+bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const RenderPlan& render,
+                       const ChildOutputs& outputs);
 
 // Every check of every checkpoint, from the child's raw outputs. Images for
 // the report go to out_dir/<lab>/<checkpoint>[.expected|.diff].png. The

@@ -11,6 +11,7 @@
 #include "framework/error.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/judge_buffer.hpp"
+#include "grading/judge/judge_portable.hpp"
 #include "grading/judge/report_files.hpp"
 
 namespace grading {
@@ -18,14 +19,15 @@ namespace grading {
 // One checkpoint's frame, each output read once for all its checks.
 class Frame {
 public:
-    // The frame's PNG goes into the report folder `out_dir`. A name it
-    // left there shared with the reference's copy (a hard link) is dropped
-    // first, so that copying the reference again writes that file in place.
+    // The frame's PNG goes into the report folder `out_dir` (none when it is
+    // empty: a verdict only). A name it left there shared with the
+    // reference's copy (a hard link) is dropped first, so that copying the
+    // reference again writes that file in place.
     Frame(const ChildOutputs& outputs, const RenderPlan& plan, const std::string& lab,
           const std::string& out_dir)
         : outputs_(outputs), plan_(plan), out_dir_(out_dir) {
         const std::string name = lab + "/" + plan.checkpoint + ".png";
-        unshare_report_file(out_dir + "/" + name);
+        if (!out_dir.empty()) unshare_report_file(out_dir + "/" + name);
         has_color_ = read_rendered(outputs, plan, color_, color_why_);
         if (has_color_) rendered_ = name;
     }
@@ -103,6 +105,15 @@ public:
         return has_buffers_ ? &buffers_ : nullptr;
     }
 
+    const std::vector<UsageFinding>* usage(std::string& why) {
+        if (!usage_tried_) {
+            usage_tried_ = true;
+            has_usage_ = read_usage(outputs_, plan_.checkpoint, usage_, usage_why_);
+        }
+        why = usage_why_;
+        return has_usage_ ? &usage_ : nullptr;
+    }
+
 private:
     const ChildOutputs& outputs_;
     RenderPlan plan_;
@@ -119,6 +130,9 @@ private:
     bool buffers_tried_ = false, has_buffers_ = false;
     std::vector<fw::LabBuffer> buffers_;
     std::string buffers_why_;
+    bool usage_tried_ = false, has_usage_ = false;
+    std::vector<UsageFinding> usage_;
+    std::string usage_why_;
 };
 
 }  // namespace grading

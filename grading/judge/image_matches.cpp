@@ -112,6 +112,9 @@ bool ReferenceImages::matches(const std::string& relative, const fw::Image& fram
     const Entry& e = entry(relative);
     fw::CompareOptions verdict_only = options;
     verdict_only.difference = false;
+    // The comparison runs both ways (fw::compare_images), so a frame that
+    // lacks the other's thin lines does not match it: a name rests on frames
+    // that are alike, not on one that fits inside the other.
     return e.image && close_summaries(mine, e.summary) &&
            fw::compare_images(frame, *e.image, verdict_only).passed;
 }

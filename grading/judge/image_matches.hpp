@@ -5,7 +5,8 @@
 // order of `srt`, a camera that ignores `fov`. The report says so in one
 // sentence, with the parameters in which the two checkpoints differ. A frame
 // that matches the frame of a mistake the course knows (known_mistakes.hpp)
-// is named too.
+// is named too. Frames match when they pass the comparison, which runs both
+// ways.
 #pragma once
 
 #include <map>
@@ -37,10 +38,11 @@ public:
     };
     static Summary summarise(const fw::Image& image);
 
-    // Whether `frame` (its summary `mine`) passes a comparison under
-    // `options` with the image at `relative` (a path in the repository: a
-    // checkpoint's reference, a known mistake's frame); false when that
-    // image is missing or unreadable. The summaries rule most pairs out.
+    // Whether `frame` (its summary `mine`) and the image at `relative` (a
+    // path in the repository: a checkpoint's reference, a known mistake's
+    // frame) pass a comparison under `options`, which runs both ways; false
+    // when that image is missing or unreadable. The summaries rule most
+    // pairs out.
     bool matches(const std::string& relative, const fw::Image& frame, const Summary& mine,
                  const fw::CompareOptions& options);
 

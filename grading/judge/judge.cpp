@@ -19,8 +19,10 @@
 #include "grading/judge/image_matches.hpp"
 #include "grading/judge/image_words.hpp"
 #include "grading/judge/judge_buffer.hpp"
+#include "grading/judge/judge_portable.hpp"
 #include "grading/judge/judge_source.hpp"
 #include "grading/judge/judge_unit.hpp"
+#include "grading/judge/state_diff.hpp"
 #include "grading/run/parallel.hpp"
 
 namespace grading {
@@ -54,16 +56,21 @@ void verdict(CheckResult& r, bool pass, const std::string& output) {
     r.output = output;
 }
 
+// `starting`: the sentence that a part the checkpoint needs still has its
+// starting code (starting_code.hpp), said in place of the frame's matches,
+// which a missing part's frame is no evidence of.
 void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck& check,
                  Frame& frame, const std::string& out_dir, ReferenceImages& references,
-                 CheckResult& r) {
+                 const std::string& starting, CheckResult& r) {
     r.title = "image vs reference";
     const fw::CompareOptions opt = check.options();
-    const int side = 2 * opt.radius + 1;
+    const std::string side = std::to_string(2 * opt.radius + 1),
+                      within = " is within " + std::to_string(opt.tolerance) + "/255";
     const std::string expected =
         "Expected: " + lab.reference(cp.name) + "; a pixel passes when a reference pixel in its " +
-        std::to_string(side) + "x" + std::to_string(side) + " neighbourhood is within " +
-        std::to_string(opt.tolerance) + "/255 on every channel; at most " +
+        side + "x" + side + " neighbourhood" + within +
+        " on every channel, and the reference's pixel there has a rendered pixel in its " + side +
+        "x" + side + " neighbourhood that" + within + "; at most " +
         num(opt.max_failed_fraction * 100) + "% of pixels may fail\n";
     std::string why;
     const fw::Image* image = frame.color(why);
@@ -82,6 +89,8 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
     fw::CompareOptions verdict_only = opt;
     verdict_only.difference = false;
     fw::CompareResult c = fw::compare_images(*image, reference, verdict_only);
+    // No report folder: the verdict alone (frame_checks_pass).
+    if (out_dir.empty()) return verdict(r, c.passed, expected);
     r.expected = lab.id + "/" + cp.name + ".expected.png";
     copy_into_report(ref_path, out_dir + "/" + r.expected);  // not encoded again
     if (image->width == reference.width && image->height == reference.height &&
@@ -97,7 +106,8 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
     }
     std::string where = c.passed ? "" : describe_difference(*image, reference, c);
     if (!c.passed && !c.size_mismatch)
-        r.diagnosis = failed_frame_diagnosis(lab, cp, *image, opt, references);
+        r.diagnosis =
+            starting.empty() ? failed_frame_diagnosis(lab, cp, *image, opt, references) : starting;
     verdict(r, c.passed,
             expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where) +
                 (r.diagnosis.empty() ? "" : "\n" + r.diagnosis));
@@ -189,39 +199,21 @@ void judge_stat(const StatCheck& check, Frame& frame, CheckResult& r) {
 }
 
 // A buffer check, against the frame's buffers file.
-void judge_frame_buffer(const BufferCheck& check, Frame& frame, CheckResult& r) {
+void judge_frame_buffer(const BufferCheck& check, Frame& frame, const std::string& starting,
+                        CheckResult& r) {
     std::string why;
     const std::vector<fw::LabBuffer>* buffers = frame.buffers(why);
-    judge_buffer(check, buffers, why, r);
+    judge_buffer(check, buffers, why, r, starting);
 }
 
-}  // namespace
-
-std::string shader_error_status(const ChildOutputs& outputs) {
-    std::string bytes, why;
-    if (!outputs.read("child.json", 256 * 1024, bytes, why)) return {};
-    const json child = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
-    if (!child.is_object() || !child.contains("shader_errors") ||
-        !child["shader_errors"].is_array())
-        return {};
-    // The child's word, used only for this status line: never for a score.
-    std::vector<std::string> files;
-    for (const json& e : child["shader_errors"]) {
-        if (!e.is_object() || !e.contains("file") || !e["file"].is_string()) continue;
-        std::string file = e["file"];
-        if (file.size() > 200) file = file.substr(0, 200) + "...";
-        if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
-    }
-    if (files.empty()) return {};
-    const size_t shown = std::min<size_t>(files.size(), 4);
-    std::string text =
-        "shader error in " +
-        fw::join(std::vector<std::string>(files.begin(), files.begin() + shown), ", ");
-    if (files.size() > shown) text += " and " + std::to_string(files.size() - shown) + " more";
-    return text;
+// A portable check, against the frame's record of its GL usage.
+void judge_frame_usage(Frame& frame, CheckResult& r) {
+    std::string why, render_why;
+    const std::vector<UsageFinding>* findings = frame.usage(why);
+    const bool rendered = frame.color(render_why) != nullptr;
+    r.rendered = frame.rendered();
+    judge_portable(findings, why, rendered, render_why, r);
 }
-
-namespace {
 
 // units.json as the child wrote it, when the plan has unit cases; else (or
 // when it cannot be read) null, and why in `why`.
@@ -247,20 +239,22 @@ struct LabInputs {
     ReferenceImages references;  // other checkpoints' images, for a failed frame
 };
 
-// Check `i` of checkpoint `k`, on its frame (null when it renders none).
+// Check `i` of checkpoint `k`, on its frame (null when it renders none);
+// `starting` as judge_image's.
 void judge_check(LabInputs& in, size_t k, size_t i, const RenderPlan* render, Frame* frame,
-                 CheckResult& result) {
+                 const std::string& starting, CheckResult& result) {
     const fw::Checkpoint& cp = in.lab.file.checkpoints[k];
     const Check& check = in.lab.checks.at(k)[i];
     result.lab = in.lab.id;
     result.checkpoint = cp.name;
     result.kind = check.kind;
-    result.visibility = visibility_named(cp.visibility);
+    result.visibility = in.lab.visibility.at(k);
     result.max_score = check.points;
+    std::string own;
     switch (check.kind) {
         case CheckKind::Image:
             judge_image(in.lab, cp, check.as<ImageCheck>(), *frame, in.out_dir, in.references,
-                        result);
+                        starting, result);
             break;
         case CheckKind::Probe:
             judge_probe(check.as<ProbeCheck>(), *render, *frame, result);
@@ -272,15 +266,39 @@ void judge_check(LabInputs& in, size_t k, size_t i, const RenderPlan* render, Fr
             judge_forbidden(in.lab, check.as<ForbiddenCheck>(), in.outputs.status(), result);
             break;
         case CheckKind::Buffer:
-            judge_frame_buffer(check.as<BufferCheck>(), *frame, result);
+            judge_frame_buffer(check.as<BufferCheck>(), *frame, starting, result);
+            break;
+        case CheckKind::Portable:
+            judge_frame_usage(*frame, result);
             break;
         case CheckKind::Unit:
+            // A unit check's results are evidence of its own function: only
+            // that function's starting code is said in place of its mistakes.
+            if (!starting.empty())
+                own = starting_code_sentence(in.lab.root, in.lab.sources, in.lab.parts, cp.parts,
+                                             check.as<UnitCheck>().function);
             for (const UnitPlan& u : in.plan.units)
                 if (u.checkpoint == cp.name && u.check == i)
                     judge_unit(in.lab, check.as<UnitCheck>(), u, in.plan.seed,
-                               in.units.is_object() ? &in.units : nullptr, in.units_why, result);
+                               in.units.is_object() ? &in.units : nullptr, in.units_why, result,
+                               own);
             break;
     }
+}
+
+// A failed checkpoint whose needed part still has its starting code says so
+// once, under its first failed check, where no check has said it.
+void say_starting(const std::string& starting, std::vector<CheckResult>& results) {
+    if (starting.empty()) return;
+    CheckResult* first = nullptr;
+    for (CheckResult& r : results) {
+        if (r.passed) continue;
+        if (r.diagnosis.find(starting) != std::string::npos) return;
+        if (!first) first = &r;
+    }
+    if (!first) return;
+    first->diagnosis = first->diagnosis.empty() ? starting : starting + "\n" + first->diagnosis;
+    first->output += "\n" + starting;
 }
 
 // What this grading wrote into the lab's folder (its frames, and its
@@ -302,6 +320,25 @@ void keep_written(const std::string& dir, const std::vector<std::string>& render
 
 }  // namespace
 
+bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const RenderPlan& render,
+                       const ChildOutputs& outputs) {
+    LabInputs in{lab, plan, outputs, "", json(), "", ReferenceImages(lab)};
+    const auto& checkpoints = lab.file.checkpoints;
+    const auto k = static_cast<size_t>(
+        std::find_if(checkpoints.begin(), checkpoints.end(),
+                     [&](const fw::Checkpoint& cp) { return cp.name == render.checkpoint; }) -
+        checkpoints.begin());
+    if (k == checkpoints.size()) return false;
+    Frame frame(outputs, render, lab.id, "");
+    for (size_t i = 0; i < lab.checks.at(k).size(); ++i) {
+        if (!lab.checks[k][i].renders()) continue;
+        CheckResult result;
+        judge_check(in, k, i, &render, &frame, "", result);
+        if (!result.passed) return false;
+    }
+    return true;
+}
+
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    const ChildOutputs& outputs, const std::string& out_dir,
                                    int threads) {
@@ -320,8 +357,12 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
         const RenderPlan* render = r == renders.end() ? nullptr : r->second;
         if (render) frame.emplace(outputs, *render, lab.id, out_dir);
         by_checkpoint[k].resize(lab.checks.at(k).size());
+        const std::string starting =
+            starting_code_sentence(lab.root, lab.sources, lab.parts, checkpoints[k].parts);
         for (size_t i = 0; i < by_checkpoint[k].size(); ++i)
-            judge_check(in, k, i, render, frame ? &*frame : nullptr, by_checkpoint[k][i]);
+            judge_check(in, k, i, render, frame ? &*frame : nullptr, starting, by_checkpoint[k][i]);
+        say_starting(starting, by_checkpoint[k]);
+        if (frame) add_state_diff(lab, checkpoints[k], outputs, by_checkpoint[k]);
         if (frame) {
             frame->publish();
             rendered[k] = frame->rendered();

@@ -169,7 +169,7 @@ bool read_buffers(const ChildOutputs& outputs, const std::string& checkpoint,
 }
 
 void judge_buffer(const BufferCheck& check, const std::vector<fw::LabBuffer>* buffers,
-                  const std::string& why, CheckResult& r) {
+                  const std::string& why, CheckResult& r, const std::string& starting) {
     r.title = "buffer " + check.buffer;
     const BufferExpectation& want = check.expected;
     const std::string expected = "Expected: buffer '" + check.buffer + "' holds " +
@@ -190,7 +190,9 @@ void judge_buffer(const BufferCheck& check, const std::vector<fw::LabBuffer>* bu
                            ")");
     std::vector<std::string> diagnosis;
     std::string named;
-    if (const KnownBufferMistake* m = matching_mistake(check, *seen)) {
+    if (!starting.empty()) {
+        diagnosis.push_back(starting);
+    } else if (const KnownBufferMistake* m = matching_mistake(check, *seen)) {
         named = ": " + m->sentence + "?";
         diagnosis.push_back("Likely mistake (" + m->id + "): " + m->sentence + ".");
     }

@@ -82,6 +82,9 @@ std::vector<int> lines_using(const std::string& text, const std::string& name) {
 
 void judge_forbidden(const LabData& lab, const ForbiddenCheck& check, const LabStatus& lab_status,
                      CheckResult& result) {
+    const size_t others = check.names.size() - 1;
+    result.title = "source without " + check.names.front();
+    if (others > 0) result.title += " and " + std::to_string(others) + " other names";
     if (!lab_status.ok()) {
         result.passed = false;
         result.score = 0.0;

@@ -333,7 +333,8 @@ std::string unit_case_text(const ReferenceUnit& ref, const json& args, bool edge
 }
 
 void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan, unsigned seed,
-                const json* units, const std::string& units_why, CheckResult& r) {
+                const json* units, const std::string& units_why, CheckResult& r,
+                const std::string& starting) {
     const ReferenceUnit& ref = find_reference(lab.id, check.function);
     const double tol = check.tolerance.value_or(ref.tolerance);
     size_t edges = 0;
@@ -378,6 +379,7 @@ void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan
         for (const Explanation& e : recognised.mistakes)
             diagnosis.push_back(likely_mistake(ref, e));
         if (recognised.coincide) diagnosis.push_back(kSameValuesNote);
+        if (!starting.empty()) diagnosis = {starting};
         if (non_finite != 0.0)
             diagnosis.push_back("Your function returned " +
                                 std::string(fw::non_finite_name(non_finite)) + ": " +

@@ -17,9 +17,13 @@
 namespace grading {
 
 // One unit check of `lab`: `units` is the child's units.json (null when it
-// could not be read, `units_why` saying why).
+// could not be read, `units_why` saying why). `starting`, when not empty, is
+// the sentence saying that a part the checkpoint needs still has its
+// starting code (starting_code.hpp): a failing check says it in place of
+// the mistakes it would name, which such a result is no evidence of.
 void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan, unsigned seed,
-                const nlohmann::json* units, const std::string& units_why, CheckResult& r);
+                const nlohmann::json* units, const std::string& units_why, CheckResult& r,
+                const std::string& starting = "");
 
 // A unit check's points when `passed` of `cases` cases passed: `max_score`
 // in proportion, rounded down to a tenth of a point (1008 of 1009 cases of

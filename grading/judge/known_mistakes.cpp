@@ -93,9 +93,13 @@ std::string known_mistake_sentence(const MistakeFrame& frame) {
         whys.push_back("code that " + m.why);
     }
     const bool one = frame.mistakes.size() == 1;
+    // The frame is the evidence, not the code: another mistake, in another
+    // file, may draw the same frame, so the sentence names the misconception
+    // and leaves the student to find whether their code holds it.
     return std::string("Your frame is the one ") +
            (one ? "a known mistake draws" : "known mistakes draw") + " (" + fw::join(ids, ", ") +
-           "): " + fw::join(whys, ", or ") + ".";
+           "): the frame of " + fw::join(whys, ", or of ") +
+           ". Another mistake can draw the same frame: check whether your code does this.";
 }
 
 }  // namespace grading

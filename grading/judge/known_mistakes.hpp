@@ -9,8 +9,11 @@
 //   CHECKPOINT.1.png ...
 //
 // (several mistakes that draw the same frame share its entry). A student's
-// frame that fails its image check but matches one of these is named: "Your
-// frame is the one a known mistake draws (ID): code that WHY."
+// frame that fails its image check but matches one of these (each passes
+// the comparison with the other) is named: "Your frame is the one a known
+// mistake draws (ID): the frame of code that WHY. Another mistake can draw
+// the same frame: check whether your code does this." The frame is the only
+// evidence, so the sentence names the misconception, never a file.
 #pragma once
 
 #include <map>
@@ -42,8 +45,9 @@ MistakeFrames read_mistake_frames(const std::string& root, const std::string& la
 // The file's text for one checkpoint's frames (read_mistake_frames reads it back).
 std::string mistake_frames_text(const std::vector<MistakeFrame>& frames);
 
-// "Your frame is the one a known mistake draws (ID): code that WHY." (with
-// "or" between several).
+// "Your frame is the one a known mistake draws (ID): the frame of code that
+// WHY. Another mistake can draw the same frame: check whether your code does
+// this." (with "or of" between several).
 std::string known_mistake_sentence(const MistakeFrame& frame);
 
 }  // namespace grading

@@ -22,7 +22,9 @@
 #include <vector>
 
 #include "framework/error.hpp"
+#include "grading/judge/file_isolation.hpp"
 #include "grading/platforms/autograder.hpp"
+#include "grading/platforms/run_logged.hpp"
 #include "grading/platforms/submitted_files.hpp"
 #include "grading/report/prairielearn_results.hpp"
 #include "grading/report/report_text.hpp"
@@ -81,73 +83,6 @@ std::string fallback_json(const Layout& layout, const std::string& reason,
                                   {"output", report::clean_text(reason + "\n\n" + details)}}
                .dump(2) +
            "\n";
-}
-
-// What the shell's $? says of a child: its exit status, or 128 + the signal.
-int shell_status(int wait_status) {
-    if (WIFEXITED(wait_status)) return WEXITSTATUS(wait_status);
-    if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
-    return 255;
-}
-
-// Writes all of `bytes` to `fd`; false when it cannot.
-bool write_all(int fd, const char* bytes, size_t size) {
-    while (size > 0) {
-        const ssize_t n = write(fd, bytes, size);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        bytes += n;
-        size -= static_cast<size_t>(n);
-    }
-    return true;
-}
-
-// Copies everything readable from `from` to `log` and to our stdout, like
-// tee: a log that cannot be written does not stop the copy to stdout.
-void tee(int from, int log) {
-    char buf[65536];
-    bool log_ok = true;
-    for (;;) {
-        const ssize_t n = read(from, buf, sizeof buf);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return;
-        log_ok = log_ok && write_all(log, buf, static_cast<size_t>(n));
-        std::fwrite(buf, 1, static_cast<size_t>(n), stdout);
-        std::fflush(stdout);
-    }
-}
-
-// Runs `argv` (its first word looked up in PATH) with no stdin and its
-// stdout and stderr written to `log`, and also to our stdout when `echo`.
-// Returns its status as the shell would report it; 127 when it cannot start.
-int run_logged(const std::vector<std::string>& argv, const fs::path& log, bool echo) {
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    const int log_fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-    const int devnull = open("/dev/null", O_RDONLY | O_CLOEXEC);
-    int fds[2] = {-1, -1};
-    if (log_fd < 0 || devnull < 0 || (echo && pipe2(fds, O_CLOEXEC) != 0))
-        throw fw::Error("cannot set up the log '" + log.string() + "': " + std::strerror(errno));
-    const int out = echo ? fds[1] : log_fd;
-    std::fflush(stdout);
-    const pid_t pid = fork();
-    if (pid == 0) {
-        if (dup2(devnull, 0) >= 0 && dup2(out, 1) >= 0 && dup2(out, 2) >= 0)
-            execvp(args[0], args.data());
-        std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
-        _exit(127);
-    }
-    if (echo) close(fds[1]);
-    if (pid > 0 && echo) tee(fds[0], log_fd);
-    if (echo) close(fds[0]);
-    close(devnull);
-    close(log_fd);
-    if (pid < 0) throw fw::Error(std::string("cannot fork: ") + std::strerror(errno));
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    return shell_status(status);
 }
 
 class Autograder {
@@ -225,21 +160,43 @@ private:
         if (geteuid() == 0 && chown(results_.c_str(), 0, 0) == 0) chmod(results_.c_str(), 0755);
     }
 
-    // PrairieLearn brings the checkpoints and references with each job, in
-    // /grade where the user may read: course grades with a copy in the work
-    // directory, which only root may enter (Gradescope's setup.sh protects
-    // its own tree). `course grade --run-as` then checks that the user
-    // cannot read the references.
+    // What only course may read, kept from the user before any submitted
+    // code runs: the course's text of the student shaders (file_isolation.hpp),
+    // and PrairieLearn's data folder, which PrairieLearn brings with each job
+    // to /grade, where the user may read. Course grades with a copy of the
+    // data in the work directory, which only root may enter (Gradescope's
+    // setup.sh protects its own tree); `course grade --run-as` then checks
+    // that the user cannot read the references.
     void private_data() {
-        if (!as_user_ || layout_.data == source_) return;
+        if (!as_user_) return;
+        const RunAsUser user = lookup_user(options_.user);
+        if (layout_.data == source_) {
+            lock_away(user, source_ / kSolutionShaders);
+            return;
+        }
+        lock_away(user, layout_.data);
         const fs::path copy = fs::path(work_->path()) / "data";
         std::error_code ec;
         fs::create_directories(copy, ec);
-        if (!ec) fs::copy(layout_.data / "labs", copy / "labs", fs::copy_options::recursive, ec);
+        for (const char* folder : {"labs", kSolutionShaders})
+            if (!ec && fs::exists(layout_.data / folder))
+                fs::copy(layout_.data / folder, copy / folder, fs::copy_options::recursive, ec);
         if (ec)
             throw fw::Error("cannot copy the checkpoints and references of " +
                             layout_.data.string() + " to " + copy.string() + ": " + ec.message());
         setenv("LAB_ROOT", copy.c_str(), 1);
+    }
+
+    // `dir`, where it exists, becomes root's with mode 0700; an error unless
+    // `user` then cannot read it.
+    static void lock_away(const RunAsUser& user, const fs::path& dir) {
+        if (!fs::exists(dir)) return;
+        if (chown(dir.c_str(), 0, 0) != 0 || chmod(dir.c_str(), 0700) != 0)
+            throw fw::Error("cannot keep " + dir.string() + " from the user '" + user.name +
+                            "': " + std::strerror(errno));
+        if (user_can_access(user, dir.string(), R_OK))
+            throw fw::Error("the user '" + user.name + "' can still read " + dir.string() +
+                            ", which holds what only the grader may read");
     }
 
     bool place_submitted_files() {
@@ -285,6 +242,9 @@ private:
         return false;
     }
 
+    // With one worker (no --jobs): no lab's own child, whose log reaches the
+    // results, runs beside a child given the course's text of a shader
+    // (file_isolation.hpp).
     void grade() {
         std::vector<std::string> command = {own_path(),  "grade",
                                             "--lab",     lab_.string(),

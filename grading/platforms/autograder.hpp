@@ -39,6 +39,14 @@ StudentFiles student_files(const std::filesystem::path& source,
 // submission, and what it grades in place of one the submission lacks.
 void write_student_files(const StudentFiles& students, const std::filesystem::path& dest);
 
+// Writes DEST/solution_shaders/NN_name/FILE: the course's own text (from
+// `source`) of each student file shaders/NN_name/FILE of `students`, which
+// `course grade` puts in place of the student's to tell which file is wrong
+// (file_isolation.hpp) where the student's replace the course's. Returns how
+// many it wrote.
+size_t write_solution_shaders(const StudentFiles& students, const std::filesystem::path& source,
+                              const std::filesystem::path& dest);
+
 // Throws fw::Error unless SOURCE/FOLDER/NAME, a script an autograder folder
 // is written with, exists.
 void require_template(const std::filesystem::path& source, const std::string& folder,
@@ -74,11 +82,12 @@ int autograde_command(const AutogradeOptions& options);
 // Gradescope's results.json still lists every test with its points; its
 // overall output is `reason` and the last 200 lines of `log_file` ("":
 // none). PrairieLearn's results.json says instead that the submission was
-// not gradable (prairielearn.hpp). Returns 1, the exit status of a failed grading.
+// not gradable (prairielearn.hpp). The summary table goes to stdout unless
+// `print` is false. Returns 1, the exit status of a failed grading.
 int not_graded_command(const std::string& reason, const std::string& log_file,
                        const std::string& out_dir, ResultsFormat format = ResultsFormat::Gradescope,
                        const std::vector<std::string>& labs = {},
-                       HiddenAs hidden_as = HiddenAs::AfterDueDate);
+                       HiddenAs hidden_as = HiddenAs::AfterDueDate, bool print = true);
 
 // The last `lines` lines of the file at `path`, taken from at most its last
 // MiB; throws fw::Error when it cannot be read.

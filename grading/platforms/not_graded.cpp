@@ -36,7 +36,7 @@ std::string log_tail(const std::string& path, int lines) {
 
 int not_graded_command(const std::string& reason, const std::string& log_file,
                        const std::string& out_dir, ResultsFormat format,
-                       const std::vector<std::string>& labs, HiddenAs hidden_as) {
+                       const std::vector<std::string>& labs, HiddenAs hidden_as, bool print) {
     const std::string log = log_file.empty() ? "" : log_tail(log_file, 200);
     // The checks, named and scored as `course grade` names them, judged on the
     // outputs of a child that never ran: an empty work directory.
@@ -58,7 +58,7 @@ int not_graded_command(const std::string& reason, const std::string& log_file,
     const std::string path = report::in_dir(out_dir, "results.json");
     if (format == ResultsFormat::PrairieLearn) {
         report::write_text_file(path, prairielearn_not_gradable_json(reason, log));
-        std::printf("%s", summary_table(run).c_str());
+        if (print) std::printf("%s", summary_table(run).c_str());
         return 1;
     }
 
@@ -69,7 +69,7 @@ int not_graded_command(const std::string& reason, const std::string& log_file,
         report::clean_text("0/" + report::points(run.max_score()) + " points: " + reason +
                            (log.empty() ? "" : "\n\n" + log) + "\n");
     report::write_text_file(path, results.dump(2) + "\n");
-    std::printf("%s", summary_table(run).c_str());
+    if (print) std::printf("%s", summary_table(run).c_str());
     return 1;
 }
 

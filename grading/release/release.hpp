@@ -2,11 +2,8 @@
 // release`). The text transformations are pure functions of a file's text, so
 // they are tested without files; release_tree() applies them to a tree.
 //
-// Release markers, in C++ and GLSL alike: a line whose text is exactly
-// `// BEGIN SOLUTION` opens a solution block and `// END SOLUTION` closes it.
-// The student version drops the block; each line inside it of the form
-// `<indent>// STUDENT: <code>` becomes `<indent><code>`, so both versions
-// compile. Blocks do not nest.
+// Release markers (grading/judge/solution_blocks.hpp, which judging reads
+// too): a solution block's student version is its STUDENT lines.
 #pragma once
 
 #include <cstddef>
@@ -14,36 +11,34 @@
 #include <string>
 #include <vector>
 
+#include "grading/judge/checks.hpp"
+#include "grading/judge/solution_blocks.hpp"
+
 namespace grading {
+
+// What `course release` writes besides the student version of the tree.
+struct ReleaseOptions {
+    // --github-classroom: kGitHubClassroomWorkflow, GitHub Classroom's
+    // autograding of the released labs (github_classroom.cpp).
+    bool github_classroom = false;
+};
 
 // `course release OUT`: the student version of source_root() in OUT
 // (release_tree.cpp); the exit status as every `course` command's.
-int release_command(const std::string& out_dir);
+int release_command(const std::string& out_dir, const ReleaseOptions& options = {});
 
-// Whether a file's name marks it as C++ or GLSL, the files that may hold
-// release markers: .cpp .hpp .h .vert .frag .geom .tesc .tese .comp .glsl.
-bool is_marked_source(const std::string& path);
-
-// One solution block: the 1-based lines of its BEGIN and END markers.
-struct SolutionBlock {
-    int begin_line = 0;
-    int end_line = 0;
-};
-
-// The blocks of `text`, checked: every BEGIN has its END, no block nests in
-// another, a STUDENT line sits inside a block and a marker is spelt exactly.
-// Throws fw::Error "PATH:LINE: what is wrong; how to fix it" (`path` only
-// names the text in messages).
-std::vector<SolutionBlock> solution_blocks(const std::string& text, const std::string& path);
-
-// The student version of `text`: every block replaced by its STUDENT lines.
-// Line endings (LF or CRLF) are kept; text without markers comes back as is.
-std::string student_text(const std::string& text, const std::string& path);
-
-// `text` with only block `index` (in solution_blocks order) in its student
-// version and every other block, markers included, as written.
-std::string student_text_of_block(const std::string& text, const std::string& path,
-                                  std::size_t index);
+// GitHub Classroom's workflow in the student repository: on a push, in a
+// Debian 12 container, scripts/setup.sh builds lab and course (the Debian
+// packages and the compiler cache kept between runs); one step per lab,
+// whose id is its runner id, grades it with `course grade --format
+// github-classroom` and outputs its results.json in base64; and GitHub
+// Classroom's reporter reads them all. Throws fw::Error when `labs` is empty
+// or two labs would have the same runner id.
+constexpr const char* kGitHubClassroomWorkflow = ".github/workflows/classroom.yml";
+std::string github_classroom_workflow(const std::vector<LabData>& labs);
+// A lab's runner id: "lab" and its folder's number ("00_pipeline": "lab00"),
+// else the letters and digits of its name, lower case.
+std::string classroom_runner(const LabData& lab);
 
 // A checkpoints file (framework/checkpoints.hpp) without its hidden
 // checkpoints. The text is cut rather than rewritten, so the remaining
@@ -70,6 +65,8 @@ struct ReleaseSummary {
     std::vector<std::string> untracked;            // not tracked by git: never released
     std::size_t staff_only = 0;                    // staff files left out (is_staff_only)
     std::vector<std::pair<std::string, std::size_t>> cases;  // cases.json written -> bytes
+    std::vector<std::string> starting;  // starting.json written (grading/judge/starting_code.hpp)
+    std::size_t classroom_labs = 0;     // labs in kGitHubClassroomWorkflow, when written
 };
 
 // The recorded unit cases a release writes: at most this many random cases
@@ -89,8 +86,9 @@ std::vector<std::string> project_files(const std::string& source);
 
 // Whether the staff file `rel` stays out of the student repository: the
 // course's own tests and benchmarks, the unit checks' references
-// (labs/NN_name/grading/), CI and the staff README (the student README,
-// docs/student/README.md, takes its place).
+// (labs/NN_name/grading/), the solution's records
+// (labs/NN_name/reference/*.record.json), CI, the staff README (the student README,
+// docs/student/README.md, takes its place), docs/performance.md and docs/cluster/.
 bool is_staff_only(const std::string& rel);
 constexpr const char* kStudentReadme = "docs/student/README.md";
 
@@ -123,6 +121,7 @@ void write_file(const std::filesystem::path& path, const std::string& text,
 // Writes the student version of `source` into `out` (which must not exist or
 // be empty), keeping file modes. Every file is transformed and checked before
 // anything is written: a marker error leaves `out` untouched.
-ReleaseSummary release_tree(const std::string& source, const std::string& out);
+ReleaseSummary release_tree(const std::string& source, const std::string& out,
+                            const ReleaseOptions& options = {});
 
 }  // namespace grading

@@ -14,6 +14,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/judge/cases.hpp"
+#include "grading/judge/starting_code.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"
 
@@ -35,6 +36,7 @@ struct Planned {
 struct ReleasePlan {
     std::vector<Planned> files;
     std::map<std::string, std::set<std::string>> hidden;  // labs/NN_name -> hidden names
+    std::vector<LabData> labs;                            // the labs released, parsed
 };
 
 // How the file `rel` goes into the release; what it changes goes into
@@ -67,16 +69,28 @@ Planned plan_file(const fs::path& root, const std::string& rel, ReleasePlan& pla
     return p;
 }
 
-// The student's copy has no references (they give the solutions away): for
-// each lab with visible unit checks, their cases and course's results as
-// data: cases.json in the lab's grading/ folder (grading/judge/cases.hpp).
-void plan_unit_cases(const fs::path& root, const std::vector<std::string>& tracked,
-                     ReleasePlan& plan, ReleaseSummary& summary) {
+// The student's copy has no references (they give the solutions away) and
+// no solution blocks: for each lab, what `course` built there needs of them,
+// as data in the lab's grading/ folder. cases.json: its visible unit
+// checks' cases and course's results (grading/judge/cases.hpp).
+// starting.json: a hash of each part's starting code, so that a part still
+// as released is known there (grading/judge/starting_code.hpp).
+void plan_lab_data(const fs::path& root, const std::vector<std::string>& tracked, ReleasePlan& plan,
+                   ReleaseSummary& summary) {
     for (LabData& lab : discover_labs(root.string())) {
         // A lab git does not track is not released (its files are named as such).
         const std::string file = "labs/" + lab.dir + "/checkpoints.json";
         if (std::find(tracked.begin(), tracked.end(), file) == tracked.end()) continue;
         parse_checks(lab);
+        plan.labs.push_back(lab);
+        if (!lab.parts.empty()) {
+            Planned p;
+            p.rel = starting_file(lab.dir);
+            p.transformed = true;
+            p.text = starting_file_text(root.string(), lab.parts);
+            summary.starting.push_back(p.rel);
+            plan.files.push_back(std::move(p));
+        }
         const nlohmann::json cases = record_unit_cases(lab, kCasesSeed, kCasesPerCheck);
         if (cases.value("checks", nlohmann::json::array()).empty()) continue;
         Planned p;
@@ -112,7 +126,7 @@ ReleasePlan plan_release(const fs::path& root, ReleaseSummary& summary) {
         }
     }
     if (!errors.empty()) throw fw::Error("the release was not written: fix these first:" + errors);
-    plan_unit_cases(root, lists.tracked, plan, summary);
+    plan_lab_data(root, lists.tracked, plan, summary);
     return plan;
 }
 
@@ -148,9 +162,19 @@ bool is_staff_only(const std::string& rel) {
         "README.md",   "Dockerfile", ".dockerignore", "scripts/test.sh", "scripts/fresh-debian.sh",
         kStudentReadme};
     if (kStaffFolders.count(parts[0]) || kStaffFiles.count(rel)) return true;
-    // labs/NN_name/tests/ and labs/NN_name/grading/ (the references).
+    // Grading a class on a cluster, and the staff's measurements.
+    if (rel == "docs/performance.md" ||
+        (parts.size() >= 2 && parts[0] == "docs" && parts[1] == "cluster"))
+        return true;
+    // labs/NN_name/tests/ and labs/NN_name/grading/ (the references), and
+    // the solution's records (reference/CHECKPOINT.record.json: its exact
+    // state and uniforms, the answers of the unit functions among them).
+    const auto ends_with = [](const std::string& s, const std::string& end) {
+        return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+    };
     return parts.size() >= 4 && parts[0] == "labs" &&
-           (parts[2] == "tests" || parts[2] == "grading");
+           (parts[2] == "tests" || parts[2] == "grading" ||
+            (parts[2] == "reference" && parts.size() == 4 && ends_with(rel, ".record.json")));
 }
 
 void require_new_output_dir(const fs::path& dir) {
@@ -271,11 +295,22 @@ std::vector<std::string> project_files(const std::string& source) {
     return files;
 }
 
-ReleaseSummary release_tree(const std::string& source, const std::string& out) {
+ReleaseSummary release_tree(const std::string& source, const std::string& out,
+                            const ReleaseOptions& options) {
     const fs::path root(source), dest(out);
     require_new_output_dir(dest);
     ReleaseSummary summary;
-    const ReleasePlan plan = plan_release(root, summary);
+    ReleasePlan plan = plan_release(root, summary);
+    if (options.github_classroom) {
+        for (const Planned& p : plan.files)
+            if (p.rel == kGitHubClassroomWorkflow)
+                throw fw::Error("the release was not written: " + p.from +
+                                " would be replaced by the GitHub Classroom workflow that "
+                                "--github-classroom writes; rename it or leave the option out");
+        plan.files.push_back(
+            {kGitHubClassroomWorkflow, "", true, github_classroom_workflow(plan.labs)});
+        summary.classroom_labs = plan.labs.size();
+    }
 
     // Pass 2: write, leaving out the hidden checkpoints' references.
     std::error_code ec;
@@ -298,9 +333,9 @@ ReleaseSummary release_tree(const std::string& source, const std::string& out) {
     return summary;
 }
 
-int release_command(const std::string& out_dir) {
+int release_command(const std::string& out_dir, const ReleaseOptions& options) {
     const std::string source = source_root();
-    ReleaseSummary s = release_tree(source, out_dir);
+    ReleaseSummary s = release_tree(source, out_dir, options);
     int blocks = 0;
     size_t checkpoints = 0;
     std::printf("course release: the student version of %s\n", source.c_str());
@@ -322,6 +357,11 @@ int release_command(const std::string& out_dir) {
     for (const auto& [file, bytes] : s.cases)
         std::printf("  %-48s written: the visible unit checks' cases (%zu bytes)\n", file.c_str(),
                     bytes);
+    for (const std::string& file : s.starting)
+        std::printf("  %-48s written: the hashes of the parts' starting code\n", file.c_str());
+    if (s.classroom_labs > 0)
+        std::printf("  %-48s written: GitHub Classroom's autograding of %zu labs\n",
+                    kGitHubClassroomWorkflow, s.classroom_labs);
     for (const std::string& file : s.untracked)
         std::printf("  %-48s not released: git does not track it (commit it to release it)\n",
                     file.c_str());

@@ -23,17 +23,9 @@ using nlohmann::ordered_json;
 constexpr const char* kHidden =
     "Hidden checkpoint: its checks, and why it failed, are not shown to students.";
 
-// `text`, cleaned, and cut to about `cap` bytes (on a UTF-8 character
-// boundary) with a line saying so.
+// `text`, cleaned, and cut to about `cap` bytes with a line saying so.
 std::string capped(const std::string& text, size_t cap) {
-    std::string clean = report::clean_text(text);
-    if (clean.size() <= cap) return clean;
-    size_t end = cap;
-    while (end > 0 && (static_cast<unsigned char>(clean[end]) & 0xC0) == 0x80) --end;
-    const size_t cut = clean.size() - end;
-    clean.resize(end);
-    return clean + "\n[" + std::to_string(cut) +
-           " more bytes cut here: results.json must stay under 1 MB]\n";
+    return report::cut_text(text, cap, "results.json must stay under 1 MB");
 }
 
 bool hidden(const CheckpointResult& cp) { return cp.visibility == Visibility::Hidden; }

@@ -336,6 +336,8 @@ std::string overview_html(const GradeRun& run) {
 
 }  // namespace
 
+const char* report_style() { return kStyle; }
+
 std::string sandbox_line(const std::vector<SandboxLayer>& layers) {
     std::string line;
     for (const SandboxLayer& layer : layers)

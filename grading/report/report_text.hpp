@@ -24,6 +24,11 @@ std::string clean_text(const std::string& text);
 // alike, in element content and in quoted attribute values.
 std::string escape_markup(const std::string& text);
 
+// clean_text(), cut to about `cap` bytes (on a UTF-8 character boundary)
+// with a line saying how many more bytes were cut and `why` ("results.json
+// must stay under 1 MB"); as it is when it fits.
+std::string cut_text(const std::string& text, size_t cap, const std::string& why);
+
 // The first non-empty line of `text`, without surrounding blanks.
 std::string first_line(const std::string& text);
 
@@ -43,6 +48,10 @@ std::string sandbox_html(const std::vector<SandboxLayer>& layers);
 
 // index.html: reads the images the checks name (relative to out_dir).
 std::string html_report(const GradeRun& run, const std::string& out_dir);
+
+// index.html's style sheet (the text of its <style> block, without the
+// images), which the class's page (`course grade-class`) shares.
+const char* report_style();
 
 // The checks of `lab` that passed, and the checks of the whole run.
 size_t passed_count(const LabResult& lab);

@@ -1,7 +1,8 @@
 // The text reports of a grading run: summary.txt (the score table `course
 // grade` also prints) and junit.xml (for CI dashboards). results.json is in
-// gradescope_results.cpp (Gradescope's autograder format) or prairielearn.cpp
-// (PrairieLearn's); index.html is in report_html.cpp.
+// gradescope_results.cpp (Gradescope's autograder format),
+// prairielearn_results.cpp (PrairieLearn's) or github_classroom_results.cpp
+// (GitHub Classroom's); index.html is in report_html.cpp.
 #include "grading/report/reports.hpp"
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/report/by_checkpoint.hpp"
+#include "grading/report/github_classroom_results.hpp"
 #include "grading/report/prairielearn_results.hpp"
 #include "grading/report/report_text.hpp"
 
@@ -200,6 +202,16 @@ std::string escape_markup(const std::string& text) {
     return out;
 }
 
+std::string cut_text(const std::string& text, size_t cap, const std::string& why) {
+    std::string clean = clean_text(text);
+    if (clean.size() <= cap) return clean;
+    size_t end = cap;
+    while (end > 0 && (static_cast<unsigned char>(clean[end]) & 0xC0) == 0x80) --end;
+    const size_t cut = clean.size() - end;
+    clean.resize(end);
+    return clean + "\n[" + std::to_string(cut) + " more bytes cut here: " + why + "]\n";
+}
+
 std::string first_line(const std::string& text) {
     std::istringstream in(text);
     std::string line;
@@ -371,6 +383,8 @@ void write_reports(const GradeRun& run, const std::string& out_dir, const Result
         results.path.empty() ? report::in_dir(out_dir, "results.json") : results.path;
     if (results.format == ResultsFormat::PrairieLearn)
         report::write_text_file(results_path, prairielearn_results_json(run, out_dir));
+    else if (results.format == ResultsFormat::GitHubClassroom)
+        report::write_text_file(results_path, github_classroom_results_json(run));
     else
         report::write_text_file(results_path,
                                 report::gradescope_results_json(run, out_dir, results.hidden_as));

@@ -1,7 +1,7 @@
 // The reports of a grading run (docs/contract.md, Reports), all written into
 // the output directory: summary.txt (the table also printed), results.json
-// (Gradescope's format or PrairieLearn's), junit.xml, and a self-contained
-// index.html.
+// (Gradescope's format, PrairieLearn's or GitHub Classroom's), junit.xml, and
+// a self-contained index.html.
 #pragma once
 
 #include <cstddef>
@@ -12,7 +12,7 @@
 namespace grading {
 
 // What results.json holds (`course grade --format`) and where it goes (`--results`).
-enum class ResultsFormat { Gradescope, PrairieLearn };
+enum class ResultsFormat { Gradescope, PrairieLearn, GitHubClassroom };
 // How Gradescope shows the tests of hidden checkpoints (`--hidden-as`): one
 // of its results.json's visibility values. after_due_date (the default) and
 // after_published keep the student's total score in view; hidden (never

@@ -21,6 +21,8 @@ const char* name_of(CheckKind kind) {
             return "forbidden";
         case CheckKind::Buffer:
             return "buffer";
+        case CheckKind::Portable:
+            return "portable";
     }
     return "?";
 }

@@ -12,9 +12,9 @@ namespace grading {
 
 // The kinds of check (docs/contract.md, Checks), and a checkpoint's
 // visibility; their names are those of checkpoints.json and the reports.
-enum class CheckKind { Image, Probe, Stat, Unit, Forbidden, Buffer };
+enum class CheckKind { Image, Probe, Stat, Unit, Forbidden, Buffer, Portable };
 enum class Visibility { Visible, Hidden };
-// "image", "probe", "stat", "unit", "forbidden", "buffer"
+// "image", "probe", "stat", "unit", "forbidden", "buffer", "portable"
 const char* name_of(CheckKind kind);
 const char* name_of(Visibility visibility);  // "visible", "hidden"
 // "visible" or "hidden" (fw::Checkpoint::visibility, checked when the file

@@ -55,10 +55,6 @@ const char* plain_cause(Mistake m) {
             return " is the expected one with a direction divided by its length squared "
                    "(dot(v, v)) instead of its length: normalising divides by "
                    "sqrt(dot(v, v)), or use glm::normalize; check the division";
-        case Mistake::OffByOne:
-            return " is the expected number plus or minus 1: a count or a level that starts at "
-                   "1 where it starts at 0 (mipmap level 0 is the full-size texture), or the "
-                   "other way round; check where your count starts";
         case Mistake::ReversedProduct:
             return " is the product of the right matrices in reverse order: with column "
                    "vectors (p' = M p) the matrix next to the point acts first, so A * B "
@@ -137,6 +133,8 @@ std::string likely_mistake(const ReferenceUnit& ref, const Explanation& e) {
     std::string sentence = subject(ref, e);
     if (const char* plain = plain_cause(e.mistake))
         sentence += plain;
+    else if (e.mistake == Mistake::OffByOne)
+        sentence += " is the expected number plus or minus 1: " + ref.off_by_one;
     else if (const char* angle = angle_cause(e.mistake))
         sentence += " is the expected one for " + angle_words(ref, e) + angle;
     else if (e.mistake == Mistake::TranslationInBottomRow)

@@ -181,6 +181,7 @@ json ReferenceRecorder::entry() const {
                 {"float_steps", table_json(*float_steps_)},
                 {"alternatives", json::array()}};
     for (const ArgDomain& d : ref_.domains) out["domains"].push_back(domain_json(d));
+    if (!ref_.off_by_one.empty()) out["off_by_one"] = ref_.off_by_one;
     for (size_t i = 0; i < ref_.alternatives.size(); ++i) {
         const Alternative& a = ref_.alternatives[i];
         out["alternatives"].push_back({{"mistake", std::string(mistake_id(a.mistake))},
@@ -291,6 +292,8 @@ ReferenceUnit recorded_reference(const std::string& name, const json& entry) {
     unit.shape.list = field(name, shape, "list", T::boolean).get<bool>();
     unit.element_names =
         field(name, entry, "element_names", T::array).get<std::vector<std::string>>();
+    if (entry.contains("off_by_one"))
+        unit.off_by_one = field(name, entry, "off_by_one", T::string).get<std::string>();
     for (const json& a : field(name, entry, "alternatives", T::array)) {
         const std::string id = field(name, a, "mistake", T::string);
         const std::string alt = field(name, a, "name", T::string);

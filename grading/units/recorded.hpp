@@ -19,7 +19,8 @@
 //    "reference": [[args, result], ...],
 //    "float_steps": [[[below, above], [change of element 0, ...]], ...],
 //    "alternatives": [{"mistake": "reversed-product", "name": "reversed product",
-//                      "table": [[args, result], ...]}]}
+//                      "table": [[args, result], ...]}],
+//    "off_by_one": "..."}  (only where the reference has grading::off_by_one's words)
 // Numbers are floats written with 9 significant digits (what identifies a
 // float), the tables sorted by their argument lists, so that the same cases
 // give the same bytes.

@@ -29,6 +29,11 @@
 //     direction the function must normalise;
 //   - grading::length_squared(&fn): fn divides that direction by its length
 //     squared instead of its length;
+//   - grading::off_by_one("words"): a number result 1 more or 1 less than
+//     expected is a mistake worth naming for this function (a level or a
+//     count that starts at 1 where it starts at 0), said in these words, the
+//     function's own; without it a difference of 1 names nothing (an index
+//     in a sorted order that is 1 off is no mistake of counting);
 //   - grading::element_names({"a", "b", ...}): names for the elements of a
 //     std::vector result, for the report (an aggregate's fields are named
 //     by the lab's fw::FieldsOf, units.hpp);
@@ -182,6 +187,13 @@ struct ElementNames {
 };
 inline ElementNames element_names(std::vector<std::string> names) { return {std::move(names)}; }
 
+// What an off-by-one result means for this function, after "is the expected
+// number plus or minus 1: " ("a mipmap level counted from 1, ...").
+struct OffByOneWords {
+    std::string words;
+};
+inline OffByOneWords off_by_one(std::string words) { return {std::move(words)}; }
+
 struct ReferenceUnit {
     std::string lab;                         // lab id, e.g. "transforms"
     fw::UnitFunction function;               // name + JSON call, as in the lab
@@ -191,6 +203,9 @@ struct ReferenceUnit {
     ValueShape shape;                        // of the result
     std::vector<std::string> element_names;  // of a list result's elements, where known
     std::vector<Alternative> alternatives;   // for recognising mistakes
+    // Where a result 1 off names Mistake::OffByOne: the function's words for
+    // it (grading::off_by_one); empty: it names nothing.
+    std::string off_by_one;
     // Built from a lab's recorded cases.json (recorded.hpp), not compiled:
     // it knows only the argument lists recorded there.
     bool recorded = false;
@@ -214,6 +229,9 @@ inline void add_to_reference(ReferenceUnit& unit, Alternative alternative) {
 }
 inline void add_to_reference(ReferenceUnit& unit, ElementNames names) {
     unit.element_names = std::move(names.names);
+}
+inline void add_to_reference(ReferenceUnit& unit, OffByOneWords words) {
+    unit.off_by_one = std::move(words.words);
 }
 
 // The reference `fn` under `name`, with its domains and the optional extras
@@ -267,7 +285,8 @@ bool results_match(const nlohmann::json& expected, const nlohmann::json& observe
 #define COURSE_REFERENCE_CAT2(a, b) a##b
 #define COURSE_REFERENCE_CAT(a, b) COURSE_REFERENCE_CAT2(a, b)
 // COURSE_REFERENCE(function_name, &reference_fn, {domains...}[, extras...])
-// (the extras, in any order: a tolerance, alternatives, element names)
+// (the extras, in any order: a tolerance, alternatives, element names, the
+// off-by-one words)
 #define COURSE_REFERENCE(NAME, FN, ...)                                                           \
     namespace {                                                                                   \
     static_assert(sizeof(FW_LAB_DIR) > 1,                                                         \

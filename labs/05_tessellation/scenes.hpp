@@ -5,6 +5,7 @@
 #include <glad/gl.h>
 
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 #include "framework/params.hpp"
@@ -18,12 +19,14 @@ struct Vertex {
 
 // The parameters' choices. Each enum is what the lab switches on; the names
 // are what --set, checkpoints.json and the window's panel use.
-// The sheet's scenes: one patch each, except the icosahedron's 20.
-enum class Scene { Triangle, Sphere, Flag, ParamSphere };
+// The sheet's scenes: one patch each, except the icosahedron's 20 and the
+// ground's 16.
+enum class Scene { Triangle, Sphere, Flag, ParamSphere, Lod };
 constexpr fw::Choice<Scene> kScenes[] = {{Scene::Triangle, "triangle"},
                                          {Scene::Sphere, "sphere"},
                                          {Scene::Flag, "flag"},
-                                         {Scene::ParamSphere, "param_sphere"}};
+                                         {Scene::ParamSphere, "param_sphere"},
+                                         {Scene::Lod, "lod"}};
 // Each spacing names its shader object spacing_<name>.tese.
 enum class Spacing { Equal, FractionalEven, FractionalOdd };
 constexpr fw::Choice<Spacing> kSpacings[] = {{Spacing::Equal, "equal"},
@@ -31,6 +34,10 @@ constexpr fw::Choice<Spacing> kSpacings[] = {{Spacing::Equal, "equal"},
                                              {Spacing::FractionalOdd, "fractional_odd"}};
 enum class Show { Shaded, Normals };
 constexpr fw::Choice<Show> kShows[] = {{Show::Shaded, "shaded"}, {Show::Normals, "normals"}};
+// Scene lod: each outer level from its edge's midpoint, or every level from
+// the patch's centre (the cracks).
+enum class Lod { Edges, Centre };
+constexpr fw::Choice<Lod> kLods[] = {{Lod::Edges, "edges"}, {Lod::Centre, "centre"}};
 
 // The lab's parameters (labs/05_tessellation/README.md, Parameters): each
 // named once, by its handle, for params() and draw().
@@ -43,10 +50,14 @@ constexpr fw::ParamId<Show> kShow{"show"};
 constexpr fw::ParamId<float> kFlagD{"D"};
 constexpr fw::ParamId<float> kFlagK{"K"};
 constexpr fw::ParamId<float> kPhase{"phase"};
-constexpr fw::ParamId<bool> kAnimate{"animate"};
+constexpr fw::ParamId<float> kDetail{"detail"};
+constexpr fw::ParamId<Lod> kLod{"lod"};
+using fw::kAnimate;  // the framework's: `lab serve` draws every frame while it is on
 std::vector<fw::Param> params();
 
-// The scene's evaluation shader, a file of shaders/05_tessellation/.
+// The scene's control shader objects and its evaluation shader, files of
+// shaders/05_tessellation/.
+std::vector<std::string> control_shaders(Scene scene);
 const char* evaluation_shader(Scene scene);
 // Quad patches (4 control points) or triangles (3).
 bool quad_patches(Scene scene);
@@ -63,6 +74,10 @@ struct Patches {
     std::vector<GLuint> indices;
 };
 Patches icosahedron_patches();
+// Scene lod: the ground's 4 x 4 patches of 2 x 2, x and z in [-4, 4] at
+// y = 0: the 25 corners of the grid, and 64 indices, 4 per patch in the order
+// (u, v) = (0, 0), (1, 0), (1, 1), (0, 1), u along +x and v along -z.
+Patches ground_patches();
 
 // The flag, W x H = 2 x 1.2 in the plane z = 0 from the origin.
 constexpr float kFlagW = 2.0f, kFlagH = 1.2f;
@@ -73,5 +88,7 @@ float flag_phase(float degrees, bool animate, double time);
 // The scene's camera, P V: the identity for the triangle (NDC corners),
 // otherwise the perspective of the lit scenes times the scene's lookAt.
 glm::mat4 view_projection(Scene scene, float aspect);
+// Scene lod: the eye, from which lod.tesc measures each level's distance.
+glm::vec3 ground_eye();
 
 }  // namespace tessellation

@@ -6,10 +6,13 @@
 // triangles (equal, fractional_even and fractional_odd spacing); the
 // evaluation shader that places each generated vertex from gl_TessCoord:
 // a flat triangle, an icosahedron pushed onto the sphere, a waving flag with
-// normals from partial derivatives, and a parametric sphere.
+// normals from partial derivatives, and a parametric sphere; level of detail,
+// levels from the distance to the eye, and the cracks between patches that
+// cut a shared edge differently.
 // Lecture: tessellation shaders (control, primitive generator, evaluation),
 // the icosahedron's normalize(p0 + p1 + p2), the waving flag r(u, v), the
-// parametric sphere, normals from the cross product of partial derivatives.
+// parametric sphere, normals from the cross product of partial derivatives,
+// dynamic subdivision and level of detail.
 // GL: glEnable(GL_DEPTH_TEST), glDepthFunc, glDisable(GL_CULL_FACE),
 // glBindVertexArray, glPatchParameteri(GL_PATCH_VERTICES, 3 or 4),
 // glDrawArrays(GL_PATCHES) and glDrawElements(GL_PATCHES), GL_TESS_CONTROL_SHADER
@@ -19,9 +22,11 @@
 // GL_PRIMITIVES_GENERATED (the framework's query around each frame).
 // Student parts (marked TODO), all GLSL: the
 // levels in shaders/05_tessellation/levels.tesc, the evaluation shaders
-// sphere.tese, flag.tese and param_sphere.tese.
+// sphere.tese, flag.tese and param_sphere.tese, and level_at() and
+// set_edge_levels() in lod.tesc.
 #include <array>
 #include <string>
+#include <vector>
 
 #include "framework/gl.hpp"
 #include "framework/lab.hpp"
@@ -43,6 +48,9 @@ constexpr const char* kFlagHUniform = "u_H";                         // flag.tes
 constexpr const char* kFlagDUniform = "u_D";                         // flag.tese
 constexpr const char* kFlagKUniform = "u_K";                         // flag.tese
 constexpr const char* kPhaseUniform = "u_phase";                     // flag.tese
+constexpr const char* kEyeUniform = "u_eye";                         // lod.tesc
+constexpr const char* kDetailUniform = "u_detail";                   // lod.tesc
+constexpr const char* kFromCentreUniform = "u_from_centre";          // lod.tesc
 constexpr const char* kViewportUniform = "u_viewport";               // wireframe.geom
 constexpr const char* kShadingUniform = "u_shading";                 // shade.frag
 constexpr const char* kColorUniform = "u_color";                     // shade.frag
@@ -60,6 +68,25 @@ const glm::vec3 kWhite{1.0f};
 const glm::vec3 kGrey{0.8f};
 const glm::vec3 kLightDir = glm::normalize(glm::vec3(1.0f, 1.0f, 1.0f));
 
+// Patches drawn through an index buffer: the corners, the indices and the
+// vertex array that records both, each with its debug label.
+struct IndexedPatches {
+    struct Labels {
+        const char *corners, *indices, *vertex_array;
+    };
+    IndexedPatches() = default;
+    IndexedPatches(const Patches& patches, const fw::VertexLayout& layout, const Labels& labels)
+        : corners(fw::Buffer::from(patches.vertices, GL_ARRAY_BUFFER, labels.corners)),
+          indices(fw::Buffer::from(patches.indices, GL_ELEMENT_ARRAY_BUFFER, labels.indices)),
+          vertex_array(fw::VertexArrayDesc{.vertices = &corners,
+                                           .layout = layout,
+                                           .indices = &indices,
+                                           .index_type = GL_UNSIGNED_INT,
+                                           .label = labels.vertex_array}) {}
+    fw::Buffer corners, indices;
+    fw::VertexArray vertex_array;
+};
+
 }  // namespace
 
 class TessellationLab : public fw::Lab {
@@ -75,16 +102,15 @@ public:
     void init(fw::ProgramLibrary& programs) override {
         // File names within shaders/05_tessellation/.
         for (const fw::Choice<Scene>& scene : kScenes)
-            for (const fw::Choice<Spacing>& spacing : kSpacings)
-                program(scene.value, spacing.value) = &programs.load({
-                    "patch.vert",
-                    "levels.tesc",
-                    quad_patches(scene.value) ? "quad.tesc" : "triangle.tesc",
-                    evaluation_shader(scene.value),
-                    "spacing_" + std::string(spacing.name) + ".tese",
-                    "wireframe.geom",
-                    "shade.frag",
-                });
+            for (const fw::Choice<Spacing>& spacing : kSpacings) {
+                std::vector<std::string> files = {"patch.vert"};
+                for (const std::string& control : control_shaders(scene.value))
+                    files.push_back(control);
+                files.insert(files.end(), {evaluation_shader(scene.value),
+                                           "spacing_" + std::string(spacing.name) + ".tese",
+                                           "wireframe.geom", "shade.frag"});
+                program(scene.value, spacing.value) = &programs.load(files);
+            }
 
         // The vertex arrays record the layout (and the icosahedron's index
         // buffer); draw() binds one and draws its patches.
@@ -96,14 +122,10 @@ public:
         quad_vbo_ = fw::Buffer::from(quad_patch(), GL_ARRAY_BUFFER, "quad patch");
         quad_ = fw::VertexArray(
             fw::VertexArrayDesc{.vertices = &quad_vbo_, .layout = layout, .label = "quad"});
-        const Patches ico = icosahedron_patches();
-        ico_vbo_ = fw::Buffer::from(ico.vertices, GL_ARRAY_BUFFER, "icosahedron corners");
-        ico_ibo_ = fw::Buffer::from(ico.indices, GL_ELEMENT_ARRAY_BUFFER, "icosahedron faces");
-        ico_ = fw::VertexArray(fw::VertexArrayDesc{.vertices = &ico_vbo_,
-                                                   .layout = layout,
-                                                   .indices = &ico_ibo_,
-                                                   .index_type = GL_UNSIGNED_INT,
-                                                   .label = "icosahedron"});
+        ico_ = IndexedPatches(icosahedron_patches(), layout,
+                              {"icosahedron corners", "icosahedron faces", "icosahedron"});
+        ground_ = IndexedPatches(ground_patches(), layout,
+                                 {"ground corners", "ground patches", "ground"});
     }
 
     void draw(const fw::ParamValues& p, const fw::Frame& frame) override {
@@ -121,7 +143,9 @@ public:
     // The patches drawn and their domain: {"patches": 20, "domain": "triangles"}.
     nlohmann::json stats(const fw::ParamValues& p, const fw::Frame&) const override {
         const Scene scene = p[kScene];
-        const std::size_t patches = scene == Scene::Sphere ? ico_.index_count() / 3 : 1;
+        const std::size_t patches = scene == Scene::Sphere ? ico_.vertex_array.index_count() / 3
+                                    : scene == Scene::Lod  ? ground_.vertex_array.index_count() / 4
+                                                           : 1;
         return {{"patches", patches}, {"domain", quad_patches(scene) ? "quads" : "triangles"}};
     }
 
@@ -137,8 +161,15 @@ private:
                              const fw::Frame& frame) {
         // The uniforms that only the student parts read are set with
         // set_if_active(): the compiler removes them until that part is written.
-        program.set_if_active(kInnerUniform, p[kInner]);
-        program.set_if_active(kOuterUniform, p[kOuter]);
+        if (scene == Scene::Lod) {
+            // lod.tesc computes the levels from the distance to the eye.
+            program.set_if_active(kEyeUniform, ground_eye());
+            program.set_if_active(kDetailUniform, p[kDetail]);
+            program.set(kFromCentreUniform, p[kLod] == Lod::Centre);
+        } else {
+            program.set_if_active(kInnerUniform, p[kInner]);
+            program.set_if_active(kOuterUniform, p[kOuter]);
+        }
         program.set(kViewportUniform, glm::vec2(frame.width, frame.height));
         program.set(kWireframeUniform, p[kWireframe]);
         program.set(kEdgeColorUniform, kWhite);
@@ -171,8 +202,8 @@ private:
                 // 20 patches of 3 corners each, through the icosahedron's 60
                 // indices (GL_UNSIGNED_INT, in the element buffer of ico_).
                 glPatchParameteri(GL_PATCH_VERTICES, 3);
-                glBindVertexArray(ico_.id());
-                glDrawElements(GL_PATCHES, static_cast<GLsizei>(ico_.index_count()),
+                glBindVertexArray(ico_.vertex_array.id());
+                glDrawElements(GL_PATCHES, static_cast<GLsizei>(ico_.vertex_array.index_count()),
                                GL_UNSIGNED_INT, nullptr);
                 break;
             case Scene::Flag:
@@ -181,6 +212,14 @@ private:
                 glPatchParameteri(GL_PATCH_VERTICES, 4);
                 glBindVertexArray(quad_.id());
                 glDrawArrays(GL_PATCHES, 0, static_cast<GLsizei>(quad_.vertex_count()));
+                break;
+            case Scene::Lod:
+                // 16 patches of 4 corners each, through 64 indices into the
+                // grid's 25 corners: neighbours share the corners of their edge.
+                glPatchParameteri(GL_PATCH_VERTICES, 4);
+                glBindVertexArray(ground_.vertex_array.id());
+                glDrawElements(GL_PATCHES, static_cast<GLsizei>(ground_.vertex_array.index_count()),
+                               GL_UNSIGNED_INT, nullptr);
                 break;
             case Scene::Triangle:
                 // One patch of the triangle's 3 corners.
@@ -200,8 +239,9 @@ private:
 
     // programs_[scene][spacing]: the spacing is fixed when a program is linked.
     std::array<std::array<fw::Program*, std::size(kSpacings)>, std::size(kScenes)> programs_{};
-    fw::Buffer triangle_vbo_, quad_vbo_, ico_vbo_, ico_ibo_;
-    fw::VertexArray triangle_, quad_, ico_;
+    fw::Buffer triangle_vbo_, quad_vbo_;
+    fw::VertexArray triangle_, quad_;
+    IndexedPatches ico_, ground_;
 };
 
 FW_LAB(TessellationLab)

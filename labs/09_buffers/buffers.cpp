@@ -13,8 +13,8 @@
 // glEndTransformFeedback, glDrawTransformFeedback, glEnable and glDisable of
 // GL_RASTERIZER_DISCARD, the query GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN;
 // glDispatchCompute, glMemoryBarrier, glGetProgramiv
-// (GL_COMPUTE_WORK_GROUP_SIZE); glBindBufferBase for GL_SHADER_STORAGE_BUFFER
-// and GL_UNIFORM_BUFFER, glGetUniformIndices, glGetActiveUniformsiv
+// (GL_COMPUTE_WORK_GROUP_SIZE); glBindBufferRange for GL_SHADER_STORAGE_BUFFER
+// and glBindBufferBase for GL_UNIFORM_BUFFER, glGetUniformIndices, glGetActiveUniformsiv
 // (GL_UNIFORM_OFFSET), glGetActiveUniformBlockiv; glBindVertexArray with
 // glDrawArrays and glDrawElements. The outputs transform feedback captures
 // are named when a program is linked: the framework does it for
@@ -23,12 +23,14 @@
 // advance_with_compute() in particles.cpp; std140_place() and pack_scene() in
 // block.cpp; the step in shaders/09_buffers/advance.vert, the work-group size
 // and the step in advance.comp, the four triangles in subdivide.geom.
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "block.hpp"
 #include "framework/gl.hpp"
+#include "framework/gl/usage.hpp"
 #include "framework/lab.hpp"
 #include "parameters.hpp"
 #include "particles.hpp"
@@ -171,16 +173,21 @@ private:
     }
 
     void run_compute(int steps) {
-        std::vector<GpuParticle> start;
-        for (const Particle& q : initial_particles(count_))
-            start.push_back({glm::vec4(q.position, 1.0f), glm::vec4(q.velocity, 0.0f)});
+        // The particles, then a guard of one work group that invocations
+        // past u_count must leave as it is: the storage block ends after it
+        // (glBindBufferRange), and the grader looks at it after each dispatch.
+        const int guard = std::clamp(work_group_size(), 1, kMaxGuard);
+        const std::vector<GpuParticle> start = make_guarded(initial_particles(count_), guard);
         compute_particles_.buffer.update(start);
+        fw::gl_usage::guard(compute_particles_.buffer.id(), count_ * sizeof(GpuParticle),
+                            guard * sizeof(GpuParticle), sizeof(GpuParticle), "the particles");
         compute_->use();
         // Read only by the student's step: set once it is written.
         compute_->set_if_active(kCountUniform, static_cast<unsigned>(count_));
         compute_->set_if_active(kDtUniform, kDt);
         compute_->set_if_active(kGravityUniform, kGravity);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, B_PARTICLES, compute_particles_.buffer.id());
+        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, B_PARTICLES, compute_particles_.buffer.id(), 0,
+                          static_cast<GLsizeiptr>(start.size() * sizeof(GpuParticle)));
         groups_ = advance_with_compute(*compute_, count_, steps);
     }
 

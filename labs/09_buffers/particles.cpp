@@ -55,7 +55,7 @@ ComputeParticles make_compute_particles() {
     ComputeParticles c;
     fw::BufferDesc desc;
     desc.target = GL_SHADER_STORAGE_BUFFER;
-    desc.size = kMaxParticles * sizeof(GpuParticle);
+    desc.size = (kMaxParticles + kMaxGuard) * sizeof(GpuParticle);
     desc.usage = GL_DYNAMIC_COPY;
     desc.label = "compute particles";
     c.buffer = fw::Buffer(desc);
@@ -64,6 +64,16 @@ ComputeParticles make_compute_particles() {
         .layout = fw::VertexLayout::of<GpuParticle>().attr(A_POSITION, &GpuParticle::position),
         .label = "compute particles"});
     return c;
+}
+
+std::vector<GpuParticle> make_guarded(const std::vector<Particle>& particles, int guard) {
+    std::vector<GpuParticle> out;
+    for (const Particle& q : particles)
+        out.push_back({glm::vec4(q.position, 1.0f), glm::vec4(q.velocity, 0.0f)});
+    // A value no step of the motion makes.
+    const GpuParticle sentinel{glm::vec4(-1.0e30f), glm::vec4(-1.0e30f)};
+    out.insert(out.end(), static_cast<std::size_t>(guard), sentinel);
+    return out;
 }
 
 int advance_with_compute(const fw::Program& advance, int count, int steps) {

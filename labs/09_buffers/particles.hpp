@@ -51,13 +51,20 @@ struct GpuParticle {
     glm::vec4 velocity;
 };
 
-// The compute scene's storage buffer (kMaxParticles GpuParticles) and the
-// vertex array that draws its positions as points.
+// The compute scene's storage buffer and the vertex array that draws its
+// positions as points. It holds kMaxParticles GpuParticles and, after the
+// particles of a frame, a guard of one work group (at most kMaxGuard): what
+// invocations past the count would write into (make_guarded).
+constexpr int kMaxGuard = 1024;
 struct ComputeParticles {
     fw::Buffer buffer;
     fw::VertexArray vertices;
 };
 ComputeParticles make_compute_particles();
+
+// `particles` followed by `guard` elements of a sentinel, which no
+// invocation may change.
+std::vector<GpuParticle> make_guarded(const std::vector<Particle>& particles, int guard);
 
 // Advances the `count` particles of `particles` by `steps` dispatches of
 // `advance` (advance.comp, already in use with its uniforms set and the

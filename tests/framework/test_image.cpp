@@ -2,6 +2,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -19,6 +20,7 @@ namespace {
 
 const Rgba8 kBlack{0, 0, 0, 255};
 const Rgba8 kRed{255, 0, 0, 255};
+const Rgba8 kWhite{255, 255, 255, 255};
 
 // A black w x h image with a filled rectangle [x0, x1) x [y0, y1).
 Image rect_image(int w, int h, int x0, int y0, int x1, int y1, Rgba8 colour = kRed) {
@@ -458,12 +460,141 @@ TEST_CASE("compare: a one-pixel edge shift passes, a 10-pixel move fails") {
     fw::CompareResult moved = fw::compare_images(rect_image(64, 64, 30, 20, 50, 40), expected);
     MESSAGE(moved.summary());
     CHECK_FALSE(moved.passed);
-    // Red over black reference at x 41..49 (x 40 sees the reference edge at 39): 9 x 20.
-    // Black over red reference at x 21..29, except rows 20 and 39, which see black
-    // reference rows 19 and 40 in their 3x3 neighbourhood: 9 x 18.
-    CHECK(moved.failed_pixels == 9 * 20 + 9 * 18);
+    // Each side of the rectangle fails 198 pixels. On the right the frame's
+    // red over black reference fails at x 41..49 (x 40 sees the reference's
+    // red at 39), 9 x 20, and the reference's black under the frame's red at
+    // x 40..48 (x 49 sees the frame's black at 50), except rows 20 and 39,
+    // which see the frame's black rows 19 and 40: of those, x 40 adds 18.
+    // The left side is its mirror image: the frame's black over red
+    // reference (x 21..29, rows 21..38) and the reference's red with no red
+    // of the frame near (x 20..28, every row).
+    CHECK(moved.failed_pixels == 2 * (9 * 20 + 18));
     CHECK(moved.difference.at(45, 30) != Rgba8{0, 0, 0, 255});
     CHECK(moved.difference.at(5, 5) == Rgba8{0, 0, 0, 255});
+}
+
+namespace {
+
+// A black 64 x 64 image with a one-pixel line from (x0, y0) to (x1, y1)
+// (exclusive), horizontal or vertical.
+Image line_image(int x0, int y0, int x1, int y1, Rgba8 colour = kWhite) {
+    Image img(64, 64, kBlack);
+    for (int y = y0; y < std::max(y1, y0 + 1); ++y)
+        for (int x = x0; x < std::max(x1, x0 + 1); ++x) img.at(x, y) = colour;
+    return img;
+}
+
+long failed_in(const fw::CompareResult& r) {
+    return std::count(r.failed.begin(), r.failed.end(), std::uint8_t{1});
+}
+
+}  // namespace
+
+TEST_CASE("compare: a frame without the reference's one-pixel line fails, one with it added too") {
+    // Every black pixel of the frame has a black reference pixel next to it:
+    // only the reference's line, looked for among the frame's pixels, finds
+    // nothing. 48 pixels of 4096 (1.2%) against the 0.1% limit.
+    const Image reference = line_image(8, 32, 56, 32), blank(64, 64, kBlack);
+    const fw::CompareResult missing = fw::compare_images(blank, reference);
+    MESSAGE(missing.summary());
+    CHECK_FALSE(missing.passed);
+    CHECK(missing.failed_pixels == 48);
+    CHECK(failed_in(missing) == 48);
+    CHECK(missing.max_channel_error == 255);
+    for (int x = 0; x < 64; ++x) {
+        CAPTURE(x);
+        CHECK(missing.failed[32 * 64 + x] == (x >= 8 && x < 56));
+        CHECK(missing.failed[31 * 64 + x] == 0);
+        CHECK(missing.failed[33 * 64 + x] == 0);
+    }
+    // The difference image marks the line at full error (yellow), the rest grey.
+    CHECK(missing.difference.at(20, 32) == Rgba8{255, 255, 0, 255});
+    CHECK(missing.difference.at(20, 33) == Rgba8{0, 0, 0, 255});
+
+    // The frame's extra line fails as before, at the same pixels.
+    const fw::CompareResult extra = fw::compare_images(reference, blank);
+    MESSAGE(extra.summary());
+    CHECK_FALSE(extra.passed);
+    CHECK(extra.failed_pixels == 48);
+    CHECK(extra.max_channel_error == 255);
+    CHECK(extra.failed == missing.failed);
+    CHECK(extra.difference.at(20, 32) == Rgba8{255, 255, 0, 255});
+
+    // Vertical: the same.
+    CHECK(fw::compare_images(blank, line_image(40, 4, 40, 60)).failed_pixels == 56);
+    CHECK(fw::compare_images(line_image(40, 4, 40, 60), blank).failed_pixels == 56);
+    // Without the difference image, the same verdict.
+    fw::CompareOptions no_difference;
+    no_difference.difference = false;
+    const fw::CompareResult quick = fw::compare_images(blank, reference, no_difference);
+    CHECK(quick.failed == missing.failed);
+    CHECK(quick.max_channel_error == 255);
+}
+
+TEST_CASE("compare: a thin line a pixel off, or a pixel wider, still passes") {
+    const Image reference = line_image(8, 32, 56, 32);
+    for (const auto& [dx, dy] :
+         std::vector<std::pair<int, int>>{{0, 1}, {0, -1}, {1, 1}, {-1, 0}}) {
+        CAPTURE(dx);
+        CAPTURE(dy);
+        const Image shifted = line_image(8 + dx, 32 + dy, 56 + dx, 32 + dy);
+        const fw::CompareResult r = fw::compare_images(shifted, reference);
+        CHECK(r.passed);
+        CHECK(r.failed_pixels == 0);
+        CHECK(fw::compare_images(reference, shifted).failed_pixels == 0);
+    }
+    Image wider = reference;
+    for (int x = 8; x < 56; ++x) wider.at(x, 33) = kWhite;
+    CHECK(fw::compare_images(wider, reference).failed_pixels == 0);
+    CHECK(fw::compare_images(reference, wider).failed_pixels == 0);
+    // With radius 0 both fail on the row that differs.
+    fw::CompareOptions exact;
+    exact.radius = 0;
+    CHECK(fw::compare_images(wider, reference, exact).failed_pixels == 48);
+    CHECK(fw::compare_images(reference, wider, exact).failed_pixels == 48);
+}
+
+TEST_CASE("compare: a pixel failing both ways counts once; the heat is the larger error") {
+    // Row 20: the reference's white line drawn red in the frame: each of its
+    // pixels fails both ways (no red in the reference near it, no white in
+    // the frame near its reference pixel): 48, not 96. Row 40: a line only
+    // the frame has, x 8..31: 24 more, one way. Row 50: a line only the
+    // reference has, x 8..15: 8 more, the other way.
+    Image reference = line_image(8, 20, 56, 20), frame = line_image(8, 20, 56, 20, kRed);
+    for (int x = 8; x < 32; ++x) frame.at(x, 40) = kWhite;
+    for (int x = 8; x < 16; ++x) reference.at(x, 50) = kWhite;
+    const fw::CompareResult r = fw::compare_images(frame, reference);
+    MESSAGE(r.summary());
+    CHECK(r.failed_pixels == 48 + 24 + 8);
+    CHECK(failed_in(r) == r.failed_pixels);
+    CHECK(r.failed[20 * 64 + 30] == 1);
+    CHECK(r.failed[40 * 64 + 30] == 1);
+    CHECK(r.failed[50 * 64 + 10] == 1);
+    CHECK(r.failed[50 * 64 + 20] == 0);
+    CHECK(r.failed_fraction == doctest::Approx(80.0 / 4096));
+    // Swapped, the same positions fail.
+    const fw::CompareResult swapped = fw::compare_images(reference, frame);
+    CHECK(swapped.failed == r.failed);
+    CHECK(swapped.max_channel_error == r.max_channel_error);
+
+    // At (8, 8) the frame's grey 60 is 40 from the reference's grey 100 next
+    // to it, but the reference's white there is 195 from every pixel of the
+    // frame near it (60 and black): the larger error, 195, is the one shown.
+    Image grey_frame(16, 16, kBlack), grey_reference(16, 16, Rgba8{100, 100, 100, 255});
+    grey_frame.at(8, 8) = Rgba8{60, 60, 60, 255};
+    grey_reference.at(8, 8) = Rgba8{255, 255, 255, 255};
+    const fw::CompareResult both = fw::compare_images(grey_frame, grey_reference);
+    CHECK(both.max_channel_error == 195);
+    // A plain 195 everywhere (60 against 255) gives the heat of 195.
+    const fw::CompareResult plain = fw::compare_images(Image(4, 4, Rgba8{60, 60, 60, 255}),
+                                                       Image(4, 4, Rgba8{255, 255, 255, 255}));
+    REQUIRE(plain.max_channel_error == 195);
+    CHECK(both.difference.at(8, 8) == plain.difference.at(1, 1));
+    // The frame's error alone (40) would be a dimmer red.
+    const fw::CompareResult forty = fw::compare_images(Image(4, 4, Rgba8{60, 60, 60, 255}),
+                                                       Image(4, 4, Rgba8{100, 100, 100, 255}));
+    REQUIRE(forty.max_channel_error == 40);
+    CHECK(both.difference.at(8, 8) != forty.difference.at(1, 1));
 }
 
 TEST_CASE("compare: without the difference image, the same verdict to the pixel") {
@@ -480,7 +611,7 @@ TEST_CASE("compare: without the difference image, the same verdict to the pixel"
     CHECK(with.difference.width == 64);
     CHECK(without.passed == with.passed);
     CHECK(without.failed_pixels == with.failed_pixels);
-    CHECK(without.failed_pixels == 9 * 20 + 9 * 18);
+    CHECK(without.failed_pixels == 2 * (9 * 20 + 18));
     CHECK(without.max_channel_error == with.max_channel_error);
     CHECK(without.failed == with.failed);
     CHECK(without.summary() == with.summary());
@@ -524,6 +655,14 @@ TEST_CASE("compare: a size mismatch fails and says both sizes") {
     CHECK(r.size_mismatch);
     CHECK(r.summary().find("32x16") != std::string::npos);
     CHECK(r.summary().find("16x32") != std::string::npos);
+    CHECK(r.failed_pixels == 0);
+    CHECK(r.failed.empty());
+    CHECK(r.difference.pixels.empty());
+    // Either way round.
+    const fw::CompareResult swapped = fw::compare_images(Image(16, 32), Image(32, 16));
+    CHECK(swapped.size_mismatch);
+    CHECK_FALSE(swapped.passed);
+    CHECK(swapped.summary() == "size mismatch: actual image is 16x32, expected 32x16");
 }
 
 TEST_CASE("compare: max_failed_fraction is an inclusive limit") {

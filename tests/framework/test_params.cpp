@@ -203,6 +203,24 @@ TEST_CASE("a lab's number and id come from its folder's name") {
     }
 }
 
+TEST_CASE("animate is the framework's bool: declared or not, and refused as another type") {
+    const std::vector<fw::Param> with = {fw::Param::boolean(fw::kAnimate, false)};
+    fw::ParamValues p("demo", &with);
+    CHECK(p.declares(fw::kAnimate));
+    CHECK(!p[fw::kAnimate]);
+    p.set("animate", "true");
+    CHECK(p[fw::kAnimate]);
+    CHECK(!fw::ParamValues("demo", &sample_params()).declares(fw::kAnimate));
+
+    // A lab that declares `animate` as a number does not start.
+    fw::LabInfo info;
+    info.params = {fw::Param::number("animate", 1)};
+    REQUIRE(fw::register_lab("97_animated", info, [] { return nullptr; }));
+    fw::test::check_mentions(
+        fw::test::thrown([] { fw::default_params(fw::find_lab("animated")); }),
+        {"lab 'animated'", "parameter 'animate'", "fw::kAnimate", "Param::boolean"});
+}
+
 TEST_CASE("keyboard steps") {
     CHECK(sample_params()[0].key_step() == doctest::Approx(7.0));  // (150 - 10) / 20
     CHECK(sample_params()[1].key_step() == 1.0);

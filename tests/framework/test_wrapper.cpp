@@ -338,6 +338,34 @@ TEST_CASE("shader: a compile error names the file, the stage, the line and quote
                    {"tests/color.glsl", ".vert", ".frag", ".comp", "tessellation control"});
 }
 
+TEST_CASE(
+    "shader: a text set in place of a file is compiled instead, its includes from that folder") {
+    fw::enable_debug_output();
+    // The file does not compile; the text that stands in for it does, with
+    // shared.glsl of the file's folder (shaders/tests/).
+    fw::set_shader_overrides({{"tests/broken.frag",
+                               "#version 430 core\n#include \"shared.glsl\"\n"
+                               "in vec3 v_color;\nout vec4 o_color;\n"
+                               "void main() { o_color = vec4(v_color, "
+                               "float(A_COLOR)); }\n"}});
+    fw::Program stand_in = fw::Program::from_files({"tests/color.vert", "tests/broken.frag"});
+    CHECK(stand_in.build_error() == nullptr);
+    // Only the file named: another keeps its own text.
+    check_mentions(thrown([] { fw::Shader::from_file("tests/broken_include.frag"); }),
+                   {"shaders/tests/broken_shared.glsl:3:"});
+    // An error in the text names the file it stands for.
+    fw::set_shader_overrides({{"tests/broken.frag",
+                               "#version 430 core\nout vec4 o_color;\n"
+                               "void main() { o_color = nothing_here; }\n"}});
+    check_mentions(thrown([] { fw::Shader::from_file("tests/broken.frag"); }),
+                   {"shaders/tests/broken.frag:3:", "nothing_here"});
+    // Ended: the file again.
+    fw::set_shader_overrides({});
+    check_mentions(thrown([] { fw::Shader::from_file("tests/broken.frag"); }),
+                   {"shaders/tests/broken.frag:9:", "undeclared_colour"});
+    CHECK_NOTHROW(fw::check_gl("after the failed compiles"));
+}
+
 TEST_CASE("program library: a program that does not build fails only where it is used") {
     fw::enable_debug_output();
     fw::ProgramLibrary programs("tests");

@@ -194,7 +194,9 @@ void check_complete(const Run& run, const Expected& e) {
     }
     CHECK_MESSAGE(seen == e.checks,
                   "Expected the checks of the data files, Observed those of results.json");
-    CHECK(r.value("max_score", -1.0) == doctest::Approx(e.points));
+    CHECK(!r.contains("max_score"));  // Gradescope's specification has none at the top
+    CHECK(r.value("extra_data", json::object()).value("max_score", -1.0) ==
+          doctest::Approx(e.points));
     CHECK(r.value("score", -1.0) == doctest::Approx(score));
 }
 
@@ -265,6 +267,48 @@ std::map<std::string, std::string> hostile(const Autograder& ag, const std::stri
     }
     files[file] = out;
     return files;
+}
+
+namespace {
+
+std::map<std::string, std::string> changed(std::map<std::string, std::string> files,
+                                           const std::string& file, const std::string& find,
+                                           const std::string& replace) {
+    REQUIRE_MESSAGE(files.count(file) == 1, file << " is not a student file");
+    std::string& text = files[file];
+    const size_t at = text.find(find);
+    REQUIRE_MESSAGE(at != std::string::npos, file << " has no '" << find << "'");
+    REQUIRE_MESSAGE(text.find(find, at + 1) == std::string::npos,
+                    file << " has '" << find << "' more than once");
+    text.replace(at, find.size(), replace);
+    return files;
+}
+
+}  // namespace
+
+std::map<std::string, std::string> shader_mistake(std::map<std::string, std::string> files) {
+    return changed(std::move(files), kIsolationShader,
+                   "if (u_alpha_test && alpha < u_cutoff) discard;",
+                   "if (u_alpha_test && alpha > u_cutoff) discard;");
+}
+
+std::map<std::string, std::string> cpp_mistake(std::map<std::string, std::string> files) {
+    return changed(std::move(files), "labs/07_framebuffer_ops/fragment_state.cpp",
+                   "glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);",
+                   "glBlendFunc(GL_ONE_MINUS_SRC_ALPHA, GL_SRC_ALPHA);");
+}
+
+size_t isolation_mentions(const std::string& text) {
+    size_t mentions = 0;
+    for (size_t at = text.find("in place of yours"); at != std::string::npos;
+         at = text.find("in place of yours", at + 1))
+        ++mentions;
+    return mentions;
+}
+
+std::string isolation_sentence(const std::string& file) {
+    return "The frame is right with the course's `" + fs::path(file).filename().string() +
+           "` in place of yours: the mistake is in " + file + ".";
 }
 
 const char* const kHostileLog =

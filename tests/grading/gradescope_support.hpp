@@ -88,6 +88,20 @@ std::map<std::string, std::string> hostile(const Autograder& ag, const std::stri
                                            const std::string& code, bool at_end,
                                            const std::string& includes = "");
 
+// Which file is wrong (docs/contract.md) on the autograders: lab 7's
+// cutout.frag discarding the opaque fragments instead of the transparent
+// ones, and its set_blend_mode with the factors of "over" swapped (C++),
+// each a change of one line of the solution's student files `files` (by
+// path under the repository).
+constexpr const char* kIsolationLab = "framebuffer-ops";
+constexpr const char* kIsolationShader = "shaders/07_framebuffer_ops/cutout.frag";
+std::map<std::string, std::string> shader_mistake(std::map<std::string, std::string> files);
+std::map<std::string, std::string> cpp_mistake(std::map<std::string, std::string> files);
+// How many times `text` says which shader file is wrong (any file); and
+// the sentence that names `file` (under the repository: shaders/...).
+size_t isolation_mentions(const std::string& text);
+std::string isolation_sentence(const std::string& file);
+
 // A small fake /autograder for `course autograde`'s error paths, which
 // builds nothing of the repository (test_autograde.cpp and the PrairieLearn
 // tests): source/ holds lab 0's data file and references, one student file

@@ -1,10 +1,12 @@
-// What the report tests (test_reports, test_prairielearn_results) build their
-// runs by hand from: a check result, the three small PNG files of an image
-// check, and the lab whose child crashed.
+// What the report tests (test_reports, test_prairielearn_results,
+// test_github_classroom) build their runs by hand from: a check result, the
+// three small PNG files of an image check, and the lab whose child crashed;
+// and a results.json's test by name.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,7 +28,8 @@ inline grading::CheckResult check(const std::string& lab, const std::string& che
     c.lab = lab, c.checkpoint = checkpoint, c.title = title;
     for (grading::CheckKind k :
          {grading::CheckKind::Image, grading::CheckKind::Probe, grading::CheckKind::Stat,
-          grading::CheckKind::Unit, grading::CheckKind::Forbidden, grading::CheckKind::Buffer})
+          grading::CheckKind::Unit, grading::CheckKind::Forbidden, grading::CheckKind::Buffer,
+          grading::CheckKind::Portable})
         if (kind == grading::name_of(k)) c.kind = k;
     c.visibility = grading::visibility_named(visibility);
     c.score = score, c.max_score = max_score, c.passed = passed;
@@ -101,6 +104,16 @@ inline grading::GradeRun large_run(const std::string& dir, int labs, int checkpo
         run.labs.push_back(lab);
     }
     return run;
+}
+
+// The test of a results.json (any of its formats) with this name; a failed
+// check when there is none.
+inline const nlohmann::json& test_named(const nlohmann::json& results, const std::string& name) {
+    for (const nlohmann::json& t : results["tests"])
+        if (t.value("name", "") == name) return t;
+    FAIL("no test " << name);
+    static const nlohmann::json none;
+    return none;
 }
 
 // The independent base64 decoder (tests/support/browser.hpp) reads the

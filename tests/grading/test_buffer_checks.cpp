@@ -19,6 +19,7 @@
 #include "grading/report/prairielearn_results.hpp"
 #include "grading/report/reports.hpp"
 #include "grading/units/buffer_reference.hpp"
+#include "tests/grading/judge_support.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {
@@ -59,19 +60,8 @@ std::string parse_error_of(grading::LabData& lab) {
 // A lab of one checkpoint with `check` (and the params given), its checks parsed.
 grading::LabData lab_with(const json& check, const json& params = kParams) {
     REQUIRE(registered);
-    grading::LabData lab;
-    lab.id = "buffers";
-    lab.dir = "90_buffers";
-    lab.root = fw::test::out_dir() + "/root";
-    lab.file.path = "labs/90_buffers/checkpoints.json";
-    lab.file.lab = lab.id;
-    fw::Checkpoint cp;
-    cp.name = "falling";
-    cp.params = params;
-    cp.checks = json::array({check});
-    lab.file.checkpoints.push_back(cp);
-    grading::parse_checks(lab);
-    return lab;
+    return judge_test::lab_of("buffers", "90_buffers",
+                              {judge_test::checkpoint("falling", json::array({check}), params)});
 }
 
 const json kCheck = {
@@ -105,19 +95,9 @@ bool has(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
 
-// A work directory holding `files`, read back as a child's that exited normally.
-struct Outputs {
-    std::string dir;
-    grading::ChildRun run;
-    std::unique_ptr<grading::ChildOutputs> outputs;
-    using Files = std::vector<std::pair<std::string, std::string>>;
-    explicit Outputs(const Files& files) {
-        dir = fw::test::out_dir() + "/outputs";
-        std::filesystem::remove_all(dir);
-        std::filesystem::create_directories(dir);
-        for (const auto& [name, text] : files) fw::test::write_text(dir + "/" + name, text);
-        outputs = std::make_unique<grading::ChildOutputs>(dir, run, grading::ChildLimits{});
-    }
+// A child's outputs of `files`, and read_buffers' verdict on them.
+struct Outputs : judge_test::Outputs {
+    using judge_test::Outputs::Outputs;
     // read_buffers' verdict: "" when read, else why.
     std::string why() const {
         std::vector<fw::LabBuffer> buffers;

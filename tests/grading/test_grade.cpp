@@ -83,6 +83,22 @@ void check_cpu_line(const std::string& summary, double wall_seconds) {
     CHECK(children <= most);
 }
 
+// A copy of the repository's shaders in out_dir()/shaders with `code` put
+// at the start of main() in `file` (under shaders/); returns the copy's
+// folder and sets `line` to main()'s line in the file.
+std::string shaders_with(const std::string& file, const std::string& code, int& line) {
+    const std::string shaders = fw::test::out_dir() + "/shaders";
+    fs::remove_all(shaders);
+    fs::copy(fw::test::source_dir() + "/shaders", shaders, fs::copy_options::recursive);
+    std::string text = fw::test::read_text(shaders + "/" + file);
+    const size_t main_at = text.find("void main() {");
+    REQUIRE(main_at != std::string::npos);
+    text.insert(main_at + 13, code);
+    line = static_cast<int>(std::count(text.begin(), text.begin() + main_at, '\n')) + 1;
+    write_file(shaders + "/" + file, text);
+    return shaders;
+}
+
 }  // namespace
 
 TEST_CASE("course grade pipeline: full marks on each backend") {
@@ -97,9 +113,11 @@ TEST_CASE("course grade pipeline: full marks on each backend") {
         MESSAGE("grade wall time for lab 0 on " << backend << ": " << g.seconds << " s");
         CHECK(g.exit_code == 0);
         REQUIRE(g.results.is_object());
-        MESSAGE("Expected max_score " << points(checks) << ", observed " << g.results["max_score"]);
-        CHECK(g.results["max_score"].get<double>() == points(checks));
-        CHECK(g.results["score"].get<double>() == g.results["max_score"].get<double>());
+        MESSAGE("Expected max_score " << points(checks) << ", observed "
+                                      << g.results["extra_data"]["max_score"]);
+        CHECK(g.results["extra_data"]["max_score"].get<double>() == points(checks));
+        CHECK(g.results["score"].get<double>() ==
+              g.results["extra_data"]["max_score"].get<double>());
         check_reports(out, checks.size());
         check_cpu_line(fw::test::read_text(out + "/summary.txt"), g.seconds);
         for (const json& t : g.results["tests"]) {
@@ -433,7 +451,7 @@ TEST_CASE(
     // A transposed scale is still right: those checks keep their points.
     REQUIRE(g.results.is_object());
     CHECK(g.results["score"].get<double>() > 0);
-    CHECK(g.results["score"].get<double>() < g.results["max_score"].get<double>());
+    CHECK(g.results["score"].get<double>() < g.results["extra_data"]["max_score"].get<double>());
 
     Graded verbose = grade("FAKE_LAB_TARGET=transforms FAKE_LAB_MODE=transposed_unit",
                            "transforms --verbose --lab " + fake_lab(), out);
@@ -498,6 +516,40 @@ TEST_CASE("course bless: --backend and LAB_BACKEND choose, and a build without O
     }
 }
 
+TEST_CASE("course grade: a silhouette shader that draws no outline fails the image check") {
+    // Lab 10's silhouette_cube: the cube's faces with a one-pixel outline on
+    // top. Without the outline every pixel of the frame has a reference pixel
+    // of its colour next to it; the reference's outline has none in the frame
+    // (docs/contract.md, Checks: the comparison runs both ways).
+    int line = 0;
+    const std::string shaders =
+        shaders_with("10_advanced_geometry/silhouette.geom", " return;", line);
+    for (const std::string backend : {"egl", "osmesa"}) {
+        CAPTURE(backend);
+        if (!usable_backend(backend, "grading lab 10 without its outline on " + backend)) continue;
+        Graded g = grade("LAB_SHADER_DIR=" + shaders, "advanced-geometry --backend " + backend,
+                         fw::test::out_dir() + "/report-" + backend);
+        CHECK(g.exit_code == 1);
+        REQUIRE(g.results.is_object());
+        int images = 0;
+        for (const json& t : checks_of(g.results)) {
+            const std::string name = t.value("name", ""), output = t.value("output", "");
+            if (name.find("/ image vs reference") == std::string::npos) continue;
+            CAPTURE(name);
+            ++images;
+            const bool outline = name.find("silhouette_cube /") != std::string::npos;
+            CHECK((t["status"] == "passed") == !outline);
+            if (!outline) continue;
+            // The rule in words, and the missing outline's colour as expected.
+            fw::test::check_mentions(unescape_markup(output),
+                                     {"and the reference's pixel there has a rendered pixel in "
+                                      "its 3x3 neighbourhood that is within 8/255",
+                                      "expected yellow (1, 0.85, 0.2)"});
+        }
+        CHECK(images >= 4);
+    }
+}
+
 TEST_CASE("course grade: NDC and depth probes and stat ranges, judged from the sheet's numbers") {
     // Lab 0, scene=order, identity MVP: the blue quad at z = -0.5 covers NDC
     // (0.4, 0.4), the red quad at z = 0.5 pixel (153, 153); window depth is
@@ -554,18 +606,10 @@ TEST_CASE("course grade: a shader that does not compile costs only the checkpoin
     // Lab 4's explode program gets a compile error; its other programs are
     // whole. The checkpoints that draw in explode mode lose their points with
     // the compiler's message; every other checkpoint still passes.
-    const std::string shaders = fw::test::out_dir() + "/shaders";
-    fs::remove_all(shaders);
-    fs::copy(fw::test::source_dir() + "/shaders", shaders, fs::copy_options::recursive);
-    const std::string broken = shaders + "/04_geometry/explode.geom";
-    std::string text = fw::test::read_text(broken);
-    const size_t main_at = text.find("void main() {");
-    REQUIRE(main_at != std::string::npos);
-    text.insert(main_at + 13, " undeclared_in_explode = 1;");
-    const std::string line =
-        "explode.geom:" +
-        std::to_string(std::count(text.begin(), text.begin() + main_at, '\n') + 1);
-    write_file(broken, text);
+    int main_line = 0;
+    const std::string shaders =
+        shaders_with("04_geometry/explode.geom", " undeclared_in_explode = 1;", main_line);
+    const std::string line = "explode.geom:" + std::to_string(main_line);
 
     const std::string out = fw::test::out_dir() + "/report";
     Graded g = grade("LAB_SHADER_DIR=" + shaders, "geometry", out);

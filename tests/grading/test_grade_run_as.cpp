@@ -41,7 +41,7 @@ TEST_CASE("course grade --run-as nobody: full marks, references locked away") {
     Graded g = grade(st.env + " LAB_ROOT=" + tree, "pipeline --run-as nobody --lab " + st.lab, out);
     CHECK(g.exit_code == 0);
     REQUIRE(g.results.is_object());
-    CHECK(g.results["score"] == g.results["max_score"]);
+    CHECK(g.results["score"] == g.results["extra_data"]["max_score"]);
     CHECK(mode_of(tree + "/labs/00_pipeline/reference") == 0700);
     CHECK(mode_of(out) == 0755);
     CHECK(mode_of(out + "/pipeline") == 0700);  // it holds copies of the references
@@ -108,7 +108,7 @@ TEST_CASE("course grade --run-as nobody --shader-cache: each lab gets its own wr
                      "pipeline --run-as nobody --lab " + st.fake + " --shader-cache " + cache, out);
     CHECK(g.exit_code == 0);
     REQUIRE(g.results.is_object());
-    CHECK(g.results["score"] == g.results["max_score"]);
+    CHECK(g.results["score"] == g.results["extra_data"]["max_score"]);
     // The child's cache is a copy inside its own work directory, every file
     // of it the user's to write; what it planted there never reaches the seed.
     const std::string report = fw::test::read_text(said);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "framework/checkpoints.hpp"
 #include "framework/text.hpp"
 #include "grading/release/release.hpp"
+#include "tests/grading/grade_support.hpp"
 #include "tests/grading/gradescope_support.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -38,6 +40,20 @@ TEST_CASE("gradescope: the folder holds the repository, the scripts and the stud
         INFO(rel);
         CHECK(!grading::solution_blocks(text, rel).empty());
         CHECK(read_text(source / "student_versions" / rel) == grading::student_text(text, rel));
+    }
+    // The course's text of each student shader, aside, where only root may read it.
+    size_t shaders = 0;
+    for (const auto& [rel, text] : ag.solution_text) {
+        if (rel.rfind("shaders/", 0) != 0) continue;
+        INFO(rel);
+        ++shaders;
+        CHECK(read_text(source / "solution_shaders" / rel.substr(8)) == text);
+    }
+    CHECK(shaders > 0);
+    if (geteuid() == 0) {
+        const fs::file_status aside = fs::status(source / "solution_shaders");
+        CHECK((aside.permissions() & (fs::perms::group_all | fs::perms::others_all)) ==
+              fs::perms::none);
     }
     // Every lab's checkpoints, hidden ones included: the autograder grades them.
     for (const auto& entry : fs::directory_iterator(repo / "labs")) {
@@ -85,13 +101,75 @@ TEST_CASE("gradescope: --hidden-as goes into run_autograder; another value is re
     CHECK(!fs::exists(dir));
 }
 
+namespace {
+
+// run_autograder as an assignment of lab 7 alone (its labs= line), on `files`.
+Run submit_lab7(Autograder& ag, const std::string& what,
+                const std::map<std::string, std::string>& files) {
+    const fs::path runner = ag.root / "run_autograder";
+    const std::string full = read_text(runner);
+    std::string script = full;
+    const size_t at = script.find("\nlabs=\n");
+    REQUIRE(at != std::string::npos);
+    script.replace(at + 1, 5, "labs=" + std::string(kIsolationLab));
+    fw::test::write_text(runner, script);
+    const Run run = submit(ag, what, files);
+    fw::test::write_text(runner, full);
+    REQUIRE_MESSAGE(run.exit_code == 0, "run_autograder must exit 0 whatever the submission");
+    REQUIRE_MESSAGE(run.results.is_object(), "results.json is missing or not JSON");
+    return run;
+}
+
+// Lab 7's tests by checkpoint name, their outputs as a student reads them,
+// and which of them failed; discard_alpha_test among those.
+std::map<std::string, std::string> lab7_outputs(const Run& run, std::set<std::string>& failed) {
+    std::map<std::string, std::string> outputs;
+    for (const json& t : run.results["tests"]) {
+        CHECK(lab_of(t) == kIsolationLab);
+        outputs[t["name"]] = grade_test::unescape_markup(t.value("output", ""));
+        if (t["status"] == "failed") failed.insert(t["name"]);
+    }
+    CHECK(failed.count(std::string(kIsolationLab) + " / discard_alpha_test") == 1);
+    return outputs;
+}
+
+}  // namespace
+
+TEST_CASE("gradescope: a mistake in one shader: results.json names that file") {
+    Autograder& ag = autograder();
+    const Run run = submit_lab7(ag, "cutout.frag discarding the opaque fragments",
+                                shader_mistake(ag.solution_text));
+    std::set<std::string> failed;
+    const auto outputs = lab7_outputs(run, failed);
+    // Under each failed checkpoint (each draws with cutout.frag), once.
+    for (const auto& [name, output] : outputs) {
+        INFO(name << ":\n" << output);
+        CHECK(isolation_mentions(output) == failed.count(name));
+        if (failed.count(name))
+            CHECK(output.find(isolation_sentence(kIsolationShader)) != std::string::npos);
+    }
+    MESSAGE(failed.size() << " failed checkpoints of lab 7 name " << std::string(kIsolationShader)
+                          << "; " << run.seconds << " s");
+}
+
+TEST_CASE("gradescope: a mistake in C++: results.json names no shader file") {
+    Autograder& ag = autograder();
+    const Run run =
+        submit_lab7(ag, "set_blend_mode's factors swapped", cpp_mistake(ag.solution_text));
+    std::set<std::string> failed;
+    for (const auto& [name, output] : lab7_outputs(run, failed)) {
+        INFO(name << ":\n" << output);
+        CHECK(isolation_mentions(output) == 0);
+    }
+}
+
 TEST_CASE("gradescope: nothing submitted is graded with the student versions, below full marks") {
     Autograder& ag = autograder();
     Run run = submit(ag, "no code (student versions)", {{"README.txt", "nothing yet\n"}});
     check_complete(run, ag.expected);
     fw::test::check_mentions(run.output, {"not submitted: graded with the student version"});
     const double score = run.results.value("score", -1.0),
-                 max = run.results.value("max_score", 0.0);
+                 max = run.results.value("extra_data", json::object()).value("max_score", 0.0);
     MESSAGE("student versions: " << score << " of " << max << " points; results.json "
                                  << run.results_bytes << " bytes");
     CHECK(score < max);

@@ -1,7 +1,8 @@
 // `course gradescope` end to end, hostile submissions in lab 0: code that
 // never returns, a shader loop that never ends, a crash, a flood of output,
-// snooping on references and results. Each fails at most its own lab, and the
-// labs not at fault score as they do with the solution.
+// snooping on references, the course's shaders and results. Each fails at
+// most its own lab, and the labs not at fault score as they do with the
+// solution.
 #include <unistd.h>
 
 #include <algorithm>
@@ -93,7 +94,9 @@ TEST_CASE("gradescope: gigabytes on stdout are cut at the cap, quickly") {
     CHECK(seconds < 10);
 }
 
-TEST_CASE("gradescope: submitted code can neither read references nor write results") {
+TEST_CASE(
+    "gradescope: submitted code can neither read references or the course's shaders nor write "
+    "results") {
     if (geteuid() != 0) {
         MESSAGE(
             "skipped: run-as needs root (run_autograder runs as root on Gradescope); "
@@ -117,6 +120,9 @@ TEST_CASE("gradescope: submitted code can neither read references nor write resu
         {"@REPORT@", report.string()},
         {"@REFERENCE@", reference},
         {"@CHECKPOINTS@", (lab / "checkpoints.json").string()},
+        {"@SOLUTION_SHADER@",
+         (ag.root / "source" / "solution_shaders" / victim_file(ag, "shaders", true).substr(8))
+             .string()},
         {"@RESULTS@", (results / "results.json").string()},
         {"@GRADE_RESULTS@", (results / "grade" / "results.json").string()},
         {"@FORGED@", "{\"score\": 1000000, \"output\": \"forged by the submission\"}"}};

@@ -134,13 +134,47 @@ Graded grade(const Grader& g, const std::string& what,
     return out;
 }
 
-// The repository's solution of every student file, by name, as a file upload sends them.
-std::map<std::string, std::string> solution(const Grader& g) {
+// The repository's solution of every student file, by path.
+std::map<std::string, std::string> solution_by_path(const Grader& g) {
     std::map<std::string, std::string> files;
     for (const std::string& rel : g.student_files)
-        files[fs::path(rel).filename().string()] =
-            read_text(fs::path(fw::test::source_dir()) / rel);
+        files[rel] = read_text(fs::path(fw::test::source_dir()) / rel);
     return files;
+}
+
+// `files` (by path) by name, as a file upload sends them.
+std::map<std::string, std::string> uploaded(const std::map<std::string, std::string>& files) {
+    std::map<std::string, std::string> by_name;
+    for (const auto& [rel, text] : files) by_name[fs::path(rel).filename().string()] = text;
+    return by_name;
+}
+
+// The repository's solution of every student file, by name.
+std::map<std::string, std::string> solution(const Grader& g) {
+    return uploaded(solution_by_path(g));
+}
+
+// grade.sh of lab 7 on `files` (by path): its tests by name, their message
+// and output, and which of them failed: discard_alpha_test among those;
+// `shown` the failed ones that are visible (a hidden checkpoint's test says
+// nothing).
+std::map<std::string, std::string> grade_lab7(const Grader& g, const std::string& what,
+                                              const std::map<std::string, std::string>& files,
+                                              std::set<std::string>& shown) {
+    const Graded r = grade(g, what, uploaded(files), gradescope_test::kIsolationLab);
+    CHECK(r.results["gradable"] == true);
+    std::map<std::string, std::string> texts;
+    bool discard_failed = false;
+    for (const json& t : r.results["tests"]) {
+        const std::string name = t["name"];
+        texts[name] = t.value("message", "") + "\n" + t.value("output", "");
+        const bool failed = t["points"] != t["max_points"];
+        discard_failed |=
+            failed && name == std::string(gradescope_test::kIsolationLab) + " / discard_alpha_test";
+        if (failed && t.value("description", "") != "Hidden checkpoint") shown.insert(name);
+    }
+    CHECK(discard_failed);
+    return texts;
 }
 
 // Every checkpoint of the repository's data files, "lab / checkpoint".
@@ -210,6 +244,16 @@ TEST_CASE("prairielearn: the image holds the student version; serverFilesCourse 
                         entry.path().extension() == ".cpp"),
                       rel << ": a unit-check reference in the public image");
     }
+    // The course's text of the student shaders, which the image lacks.
+    size_t shaders = 0;
+    for (const std::string& rel : g.student_files) {
+        if (rel.rfind("shaders/", 0) != 0) continue;
+        INFO(rel);
+        ++shaders;
+        CHECK(read_text(g.data / "solution_shaders" / rel.substr(8)) == read_text(repo / rel));
+    }
+    CHECK(shaders > 0);
+    CHECK(!fs::exists(g.course / "solution_shaders"));
     const json cases = json::parse(read_text(g.data / "labs/01_transforms/grading/cases.json"));
     CHECK(cases.at("for") == "autograder");
     std::set<std::string> recorded;
@@ -273,4 +317,35 @@ TEST_CASE("prairielearn: when course grade itself fails, not gradable with the r
     CHECK(r.results["gradable"] == false);
     fw::test::check_mentions(r.results["message"], {"course grade failed (exit status 2)"});
     fw::test::check_mentions(r.results["output"], {"--timeout"});
+}
+
+TEST_CASE("prairielearn: a mistake in one shader: results.json names that file") {
+    Grader& g = grader();
+    std::set<std::string> shown;
+    const auto texts = grade_lab7(g, "cutout.frag discarding the opaque fragments",
+                                  gradescope_test::shader_mistake(solution_by_path(g)), shown);
+    // Under each visible failed checkpoint (each draws with cutout.frag), once.
+    for (const auto& [name, text] : texts) {
+        INFO(name << ":\n" << text);
+        CHECK(gradescope_test::isolation_mentions(text) == shown.count(name));
+        if (shown.count(name))
+            CHECK(text.find(gradescope_test::isolation_sentence(
+                      gradescope_test::kIsolationShader)) != std::string::npos);
+    }
+    // The data folder, the course's shaders in it, is kept from the user.
+    if (geteuid() == 0)
+        CHECK((fs::status(g.data).permissions() & (fs::perms::group_all | fs::perms::others_all)) ==
+              fs::perms::none);
+}
+
+TEST_CASE("prairielearn: a mistake in C++: results.json names no shader file") {
+    Grader& g = grader();
+    std::set<std::string> shown;
+    for (const auto& [name, text] :
+         grade_lab7(g, "set_blend_mode's factors swapped",
+                    gradescope_test::cpp_mistake(solution_by_path(g)), shown)) {
+        INFO(name << ":\n" << text);
+        CHECK(gradescope_test::isolation_mentions(text) == 0);
+    }
+    CHECK(!shown.empty());
 }

@@ -4,12 +4,14 @@
 // references), planned from the file and judged from it. The report must be
 // word for word the one the compiled reference gives: passing, failing, and
 // naming the same usual mistakes. No child runs.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,30 @@ LabData recorded_copy(const LabData& lab, const json& cases, int number) {
     LabData copy = grading::discover_labs(root).at(0);
     grading::parse_checks(copy);
     return copy;
+}
+
+// The checkpoints whose cases `recorded` holds.
+std::set<std::string> recorded_checkpoints(const json& recorded) {
+    std::set<std::string> out;
+    for (const json& c : recorded["checks"]) out.insert(c["checkpoint"].get<std::string>());
+    return out;
+}
+
+TEST_CASE("a student's copy records the visible checkpoints' cases, the autograder's every one") {
+    const LabData lab = source_lab("transforms");
+    std::set<std::string> visible, hidden;
+    for (size_t k = 0; k < lab.file.checkpoints.size(); ++k)
+        (lab.visibility[k] == grading::Visibility::Hidden ? hidden : visible)
+            .insert(lab.file.checkpoints[k].name);
+    REQUIRE(!hidden.empty());
+    const std::set<std::string> student =
+        recorded_checkpoints(grading::record_unit_cases(lab, 1, 2));
+    const std::set<std::string> autograder =
+        recorded_checkpoints(grading::record_unit_cases(lab, 1, 2, grading::RecordFor::Autograder));
+    CHECK(!student.empty());
+    for (const std::string& cp : student) CHECK_MESSAGE(visible.count(cp), cp << " is hidden");
+    CHECK(std::any_of(autograder.begin(), autograder.end(),
+                      [&](const std::string& cp) { return hidden.count(cp) > 0; }));
 }
 
 struct Recorded {

@@ -151,6 +151,15 @@ TEST_CASE("release: which files carry markers") {
         CHECK_MESSAGE(!grading::is_marked_source(no), no);
 }
 
+TEST_CASE("release: the solution's records and the sheet's state words are staff files") {
+    for (const char* staff :
+         {"labs/07_x/reference/blend_over.record.json", "labs/07_x/grading/state_words.json"})
+        CHECK_MESSAGE(grading::is_staff_only(staff), staff);
+    for (const char* student : {"labs/07_x/reference/blend_over.png",
+                                "labs/07_x/reference/mistakes/blend_over.json", "labs/07_x/x.cpp"})
+        CHECK_MESSAGE(!grading::is_staff_only(student), student);
+}
+
 namespace {
 const std::string kCheckpoints =
     "// Header comment.\n"

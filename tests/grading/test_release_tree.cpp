@@ -2,7 +2,8 @@
 // - the student tree holds no marker, no hidden checkpoint and none of the
 //   staff's files (tests, references, CI), builds, runs every lab without a
 //   crash, scores below full marks, and its own self-checks fail there and
-//   pass with the solution's files put in;
+//   pass with the solution's files put in; a part still as released is
+//   said as such there (its starting.json), and not once written;
 // - every solution block is graded before the deadline: with that block
 //   alone in its student version, some check of a visible checkpoint that
 //   passes with the solution fails (hidden checkpoints test the same code
@@ -40,6 +41,43 @@ namespace {
 
 // A marker line as a person would spot it, whatever its spacing.
 const std::regex kMarker(R"(^\s*//\s*(BEGIN SOLUTION|END SOLUTION|STUDENT:))");
+
+// The staff's `text` as a student who wrote it would have it: no marker lines.
+std::string without_markers(const std::string& text) {
+    std::istringstream lines(text);
+    std::string out;
+    for (std::string line; std::getline(lines, line);)
+        if (!std::regex_search(line, kMarker)) out += line + "\n";
+    return out;
+}
+
+// `text` with the definition of `function` (from its line to the next
+// unindented "}") replaced by that of `with`.
+std::string with_function(const std::string& text, const std::string& with,
+                          const std::string& function) {
+    const auto span = [&](const std::string& t) {
+        const size_t name = t.find(" " + function + "(");
+        REQUIRE(name != std::string::npos);
+        const size_t begin = t.rfind('\n', name) + 1, end = t.find("\n}\n", name);
+        REQUIRE(end != std::string::npos);
+        return std::make_pair(begin, end + 3);
+    };
+    const auto [b, e] = span(text);
+    const auto [wb, we] = span(with);
+    return text.substr(0, b) + with.substr(wb, we - wb) + text.substr(e);
+}
+
+// What a grade says of a checkpoint: its checks' outputs in results.json.
+std::string said_of(const Grade& g, const std::string& lab, const std::string& checkpoint) {
+    std::string words;
+    for (const auto& [name, e] : g.entries)
+        if (name.rfind(lab + " / " + checkpoint + " / ", 0) == 0) words += e.output + "\n";
+    return words;
+}
+
+bool has(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 }  // namespace
 
@@ -152,10 +190,63 @@ TEST_CASE("release: the student tree has no solutions, builds, runs and scores b
     CHECK(g.output.find("On submission the autograder adds ") != std::string::npos);
     CHECK(read_text(dir / "grade" / "index.html").find("On submission the autograder adds ") !=
           std::string::npos);
-    const double score = g.results["score"], max_score = g.results["max_score"];
+    const double score = g.results["score"], max_score = g.results["extra_data"]["max_score"];
     MESSAGE("student version: " << score << " of " << max_score << " points");
     CHECK(max_score > 0);
     CHECK(score < max_score);
+
+    // A part still as released is said as such there too (each lab's
+    // grading/starting.json), and the guesses a missing part's frame is no
+    // evidence of are not: in lab 7 with every part unwritten, sorting_sorted
+    // names part 1; with every part but 4 written, part 4. Part 4 begun
+    // (wrong), sorting_order still fails and names no part; written, it passes.
+    const std::string part1 =
+        "Part 1 (`set_blend_mode()` in labs/07_framebuffer_ops/fragment_state.cpp) still has its "
+        "starting code; this checkpoint needs it.";
+    const std::string part4 =
+        "Part 4 (`back_to_front()` in labs/07_framebuffer_ops/blending.cpp) still has its "
+        "starting code; this checkpoint needs it.";
+    const std::string lab7 = "framebuffer-ops",
+                      state = "labs/07_framebuffer_ops/fragment_state.cpp",
+                      blending = "labs/07_framebuffer_ops/blending.cpp";
+    const auto no_guess = [](const std::string& words) {
+        for (const char* guess : {"treats", "Your frame is the one"})
+            CHECK_MESSAGE(!has(words, guess), words);
+    };
+    const auto grade_lab7 = [&](const std::string& name) {
+        REQUIRE(rebuild_tree(student, "lab"));
+        return grade(bin + "/course", bin + "/lab", lab7, dir / name);
+    };
+    std::string words = said_of(g, lab7, "sorting_sorted");
+    CHECK_MESSAGE(has(words, part1), words);
+    no_guess(words);
+    write_text(student / state, without_markers(read_text(source / state)));
+    Grade part = grade_lab7("grade-part4");
+    for (const std::string checkpoint : {"sorting_sorted", "sorting_order"}) {
+        words = said_of(part, lab7, checkpoint);
+        CHECK_MESSAGE(has(words, part4), words);
+        no_guess(words);
+    }
+    const std::string released = read_text(student / blending);
+    std::string begun = released;
+    const size_t back = begun.find("    return order;", begun.find(" back_to_front("));
+    REQUIRE(back != std::string::npos);
+    begun.insert(back, "    std::reverse(order.begin(), order.end());\n");
+    write_text(student / blending, begun);
+    part = grade_lab7("grade-part4-begun");
+    CHECK(std::any_of(part.failed.begin(), part.failed.end(), [&](const std::string& name) {
+        return name.rfind(lab7 + " / sorting_order / ", 0) == 0;
+    }));
+    words = said_of(part, lab7, "sorting_order");
+    CHECK_MESSAGE(!has(words, "still has its starting code"), words);
+    write_text(
+        student / blending,
+        with_function(released, without_markers(read_text(source / blending)), "back_to_front"));
+    part = grade_lab7("grade-part4-written");
+    for (const std::string checkpoint : {"sorting_sorted", "sorting_order"})
+        for (const auto& [name, e] : part.entries)
+            if (name.rfind(lab7 + " / " + checkpoint + " / ", 0) == 0)
+                CHECK_MESSAGE(part.passed.count(name) == 1, name << ": " << e.output);
 
     // Its self-checks are green on the solution: the staff's versions of the files students
     // edit, put in their place.
@@ -427,12 +518,21 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
             before = after;
         }
         order += "\n";
-        for (const auto& [part, list] : by_part)  // the solution again, for the next lab
-            for (const Block& b : list)
-                write_text(is_shader(b.file)
-                               ? shaders / fs::path(b.file).lexically_relative("shaders")
-                               : tree / b.file,
-                           read_text(source / b.file));
+        // The solution again, for the next lab; a file already holding it is
+        // left as it is, so that the lab built from it is not older than its
+        // sources (course grade refuses a lab older than a file it is built from).
+        bool rewrote_cpp = false;
+        for (const auto& [part, list] : by_part)
+            for (const Block& b : list) {
+                const fs::path target =
+                    is_shader(b.file) ? shaders / fs::path(b.file).lexically_relative("shaders")
+                                      : tree / b.file;
+                const std::string original = read_text(source / b.file);
+                if (read_text(target) == original) continue;
+                write_text(target, original);
+                rewrote_cpp = rewrote_cpp || !is_shader(b.file);
+            }
+        if (rewrote_cpp) REQUIRE(rebuild_tree(tree, "lab"));
     }
     if (cpp) REQUIRE(rebuild_tree(tree, "lab"));
     MESSAGE("each lab's parts written in the sheet's order, its visible score:\n" << order);

@@ -414,6 +414,41 @@ TEST_CASE("correct and unrelated wrong values name nothing") {
               .empty());
 }
 
+TEST_CASE("a result 1 off names off-by-one only where the reference words it, in its own words") {
+    // Lab 7's back_to_front() sorting the centres by z instead of by their
+    // distance to the eye: an order whose first wrong index is often 1 off
+    // the expected one, which says nothing of counting.
+    const auto by_z = [](const json& a, const json&) {
+        std::vector<int> order = {0, 1, 2, 3};
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int i, int j) { return num(a[1 + i][2]) < num(a[1 + j][2]); });
+        return json(order);
+    };
+    const std::string sorted = judge("framebuffer-ops", "back_to_front", 1e-4, {}, by_z, 200);
+    REQUIRE(sorted.find("cases passed") != std::string::npos);
+    CHECK_MESSAGE(sorted.find("Likely mistake") == std::string::npos, sorted);
+    CHECK_MESSAGE(sorted.find("mipmap") == std::string::npos, sorted);
+    CHECK(named("framebuffer-ops", "back_to_front", 1e-4, by_z).empty());
+    // Every index 1 more, and lab 9's std140 offset 1 more: no words for
+    // them, so nothing named either.
+    CHECK(named("framebuffer-ops", "back_to_front", 1e-4, [](const json&, const json& e) {
+              json out = e;
+              for (json& i : out) i = i.get<int>() + 1;
+              return out;
+          }).empty());
+    CHECK(named("buffers", "std140_place", 1e-4, [](const json&, const json& e) {
+              json out = e;
+              out[0] = out[0].get<double>() + 1.0;
+              return out;
+          }).empty());
+    // Lab 8's level of detail: named, in words about its levels.
+    const ReferenceUnit& lod = reference("texture-mapping", "level_of_detail");
+    const std::string line = grading::likely_mistake(lod, {grading::Mistake::OffByOne});
+    CHECK(line.rfind("Likely mistake (off-by-one): your result is the expected number plus or "
+                     "minus 1: a mipmap level counted from 1",
+                     0) == 0);
+}
+
 TEST_CASE("a mistake that explains only a minority of the failing cases is not named") {
     const ReferenceUnit& ref = reference("transforms", "compose");
     int i = 0;
@@ -702,20 +737,23 @@ TEST_CASE("a forbidden-name check reads the source only beside a lab that ran") 
     grading::judge_forbidden(lab, check, grading::LabStatus(), ran);
     CHECK(ran.passed);
     CHECK(ran.score == 2);
+    CHECK(ran.title == "source without glm::translate");
     // A submission that does not build keeps nothing for what it leaves out.
     grading::CheckResult broken;
     broken.max_score = 2;
     grading::judge_forbidden(lab, check, grading::LabStatus::failed("it does not build"), broken);
     CHECK_FALSE(broken.passed);
     CHECK(broken.score == 0);
+    CHECK(broken.title == "source without glm::translate");
     CHECK(broken.output.find("it does not build") != std::string::npos);
     // A name that is there fails the check and is named with its line.
-    check.names = {"glm::mat4"};
+    check.names = {"glm::mat4", "glm::translate", "glm::scale"};
     grading::CheckResult found;
     found.max_score = 2;
     grading::judge_forbidden(lab, check, grading::LabStatus(), found);
     CHECK_FALSE(found.passed);
     CHECK(found.output.find("transforms_math.cpp:") != std::string::npos);
+    CHECK(found.title == "source without glm::mat4 and 2 other names");
 }
 
 TEST_CASE("a unit check's points are proportional to its cases passed, rounded down to 0.1") {

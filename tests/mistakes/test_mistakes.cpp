@@ -8,7 +8,10 @@
 // that is another checkpoint's expected image); any other that fails a
 // visible image check by its own id, as the known mistake whose frame the
 // student's frame is ("Your frame is the one a known mistake draws (ID)",
-// grading/judge/known_mistakes.hpp). The table counts the named ones, and
+// grading/judge/known_mistakes.hpp). A shader file the grader names as the
+// one that holds the mistake (docs/contract.md, Which file is wrong) must be
+// the mistake's own, and a mistake in C++ names none. The table counts the
+// named ones, and
 // among them those only image, probe or stat checks catch, and lists the
 // rest (for them the terminal shows a unit check's first failing case, a
 // probe's colour or a compiler's message).
@@ -21,7 +24,8 @@
 // The list, kMistakesJson in mistakes.hpp: {"mistakes": [{"id", "lab"
 // (folder, NN_name), "file" (repository path), "find" (exact text: once in
 // the file, inside a solution block), "replace", "why" (the misconception,
-// one line), "named" (optional, the ID)}, ...]}, `//` comments allowed. It
+// one line), "named" (optional, the ID), "state" (optional, the state
+// diff's words)}, ...]}, `//` comments allowed. It
 // quotes the solution, so it sits in a solution block of its own, which
 // `course release` leaves out; with the student version's empty list there
 // is nothing to try.
@@ -29,6 +33,11 @@
 // Shader mistakes need no rebuild (the built `lab` reads LAB_SHADER_DIR);
 // C++ mistakes go into one copy of the tree, built once and rebuilt
 // incrementally per mistake.
+//
+// A mistake in the GL state a draw is told may say "state": the words the
+// state diff (grading/judge/state_diff.hpp) must print for it, from the
+// records of the draws (named by evidence); the table counts those apart
+// from the mistakes named by their frame or kind.
 //
 // Environment: MISTAKES_SKIP_NAMED=1 leaves out the check that each is named;
 // MISTAKES_ONLY=WORD,... runs only the mistakes whose id or lab contains one
@@ -90,7 +99,7 @@ bool env_is(const char* name, const char* value) {
 }
 
 struct Mistake {
-    std::string id, lab, file, find, replace, why, named;
+    std::string id, lab, file, find, replace, why, named, state;
 };
 
 std::vector<Mistake> read_mistakes(const std::string& text) {
@@ -100,7 +109,7 @@ std::vector<Mistake> read_mistakes(const std::string& text) {
         out.push_back({m.at("id").get<std::string>(), m.at("lab").get<std::string>(),
                        m.at("file").get<std::string>(), m.at("find").get<std::string>(),
                        m.at("replace").get<std::string>(), m.at("why").get<std::string>(),
-                       m.value("named", std::string())});
+                       m.value("named", std::string()), m.value("state", std::string())});
     return out;
 }
 
@@ -174,6 +183,19 @@ bool names_mistake(const Grade& g, const std::string& named, const std::string& 
            names_known(g.output, id);
 }
 
+// The shader files (under shaders/) that `text` names as the one holding
+// the mistake (docs/contract.md, Which file is wrong).
+std::set<std::string> files_named(const std::string& text) {
+    const std::string lead = "the mistake is in shaders/";
+    std::set<std::string> files;
+    for (size_t at = text.find(lead); at != std::string::npos; at = text.find(lead, at + 1)) {
+        const size_t from = at + lead.size(), end = text.find('\n', from);
+        const std::string rest = text.substr(from, end == std::string::npos ? end : end - from);
+        files.insert(rest.substr(0, rest.size() - (!rest.empty() && rest.back() == '.')));
+    }
+    return files;
+}
+
 // Whether a check of `lab` whose title starts with `kind` ("unit", "image")
 // fails in `g` (its entries are named "LAB / CHECKPOINT / TITLE"), and with
 // `visible`, on a visible checkpoint.
@@ -195,6 +217,8 @@ std::string lab_id(const std::string& dir) {
 
 struct LabTally {
     size_t mistakes = 0, caught = 0, named = 0, image_only = 0, image_only_named = 0;
+    size_t state = 0, by_evidence = 0;  // with "state", and those the state diff names
+    size_t shaders = 0, by_file = 0;    // caught in a shader, and those localised to it
     double points = 0.0;
     std::vector<std::string> unnamed;  // caught, not named: the terminal says what differs
 };
@@ -278,6 +302,7 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         std::string result;
         double lost = 0.0;
         bool caught = false, named = false, image_only = false, image_failed = false;
+        bool by_evidence = false, by_file = false;
         if (!shader && !rebuild_tree(tree, "lab")) {
             result = "DOES NOT BUILD";
         } else {
@@ -302,6 +327,17 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
                 result = hidden ? "SLIPPED: only " + std::to_string(hidden) + " hidden entries lose"
                                 : "SLIPPED: full marks";
             named = caught && names_mistake(g, m.named, m.id);
+            // Named by evidence: the state diff's sentence, from the records.
+            by_evidence = caught && !m.state.empty() && g.output.find(m.state) != std::string::npos;
+            // Which file is wrong: never another file than the mistake's,
+            // and none for a mistake in C++.
+            const std::set<std::string> files = files_named(g.output);
+            const std::string own = shader ? m.file.substr(std::strlen("shaders/")) : "";
+            if (!files.empty()) result += "; file named";
+            by_file = caught && shader && files == std::set<std::string>{own};
+            CHECK_MESSAGE((files.empty() || (shader && files == std::set<std::string>{own})),
+                          m.id << ": the grader names " << fw::join(files, ", ")
+                               << " as the file that holds a mistake in " << m.file);
             image_only = caught && !check_fails(g, lab_id(m.lab), "unit");
             // A frame to know it by: a visible image check failed on a
             // frame the lab rendered (not for want of one).
@@ -323,10 +359,17 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         t.named += named;
         t.image_only += image_only;
         t.image_only_named += image_only && named;
+        t.state += !m.state.empty();
+        t.by_evidence += by_evidence;
+        t.shaders += caught && shader;
+        t.by_file += by_file;
         if (caught)
-            result += std::string(named ? "; named" : "; not named") +
-                      (image_only ? " (image only)" : "");
-        if (caught && !named) t.unnamed.push_back(m.id);
+            result += std::string(named ? "; named by frame" : "; not named by frame") +
+                      (image_only ? " (image only)" : "") +
+                      (m.state.empty() ? ""
+                       : by_evidence   ? "; named by evidence"
+                                       : "; NOT named by evidence");
+        if (caught && !named && !by_evidence && !by_file) t.unnamed.push_back(m.id);
         char line[1024];
         std::snprintf(line, sizeof line, "%-34s %-18s %s (%.1f s)\n", m.id.c_str(), m.lab.c_str(),
                       result.c_str(), seconds_since(start));
@@ -335,9 +378,15 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         report += line;
         CHECK_MESSAGE(caught, m.id << " (" << m.why << "): " << result
                                    << "; add a visible checkpoint or probe that it fails");
+        // A state mistake must be named by the state diff.
+        if (caught && !m.state.empty() && !skip_named && !record)
+            CHECK_MESSAGE(by_evidence, m.id << ": the terminal of course grade does not say \""
+                                            << m.state << "\" (the state diff)");
         // One named by its kind must be; one that fails a visible image
         // check must be, since its frame is known (recorded).
-        if (caught && !skip_named && !record && (!m.named.empty() || image_failed))
+        // A state mistake the state diff names is named by evidence instead.
+        if (caught && !skip_named && !record && (!m.named.empty() || image_failed) &&
+            !(m.named.empty() && by_evidence))
             CHECK_MESSAGE(named, m.id << ": the terminal of course grade does not say \""
                                       << (m.named.empty() ? "known mistake draws (" + m.id + ")"
                                                           : named_sentence(m.named))
@@ -355,20 +404,24 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
 
     // The table: per lab, the mistakes tried, those caught by a visible
     // check, the visible points they lost in all, the caught ones the grader
-    // names, and of those caught only by image, probe or stat checks (no
-    // unit check fails) the ones it names.
+    // names by their frame or their kind, and of those caught only by image,
+    // probe or stat checks (no unit check fails) the ones it names; then what
+    // names them by evidence from the checkpoint itself: of the state
+    // mistakes, those the state diff names ("state"), and of the caught
+    // shader mistakes, those it localises to their own file ("file").
     char line[256];
     std::string table;
-    std::snprintf(line, sizeof line, "%-18s %8s %6s %11s %6s %10s\n", "lab", "mistakes", "caught",
-                  "points lost", "named", "image-only");
+    std::snprintf(line, sizeof line, "%-18s %8s %6s %11s %6s %10s %6s %6s\n", "lab", "mistakes",
+                  "caught", "points lost", "named", "image-only", "state", "file");
     table += line;
     LabTally sum;
     auto fraction = [](size_t a, size_t b) { return std::to_string(a) + "/" + std::to_string(b); };
     auto row = [&](const std::string& name, const LabTally& t) {
-        std::snprintf(line, sizeof line, "%-18s %8zu %6zu %11s %6s %10s\n", name.c_str(),
-                      t.mistakes, t.caught, points_text(t.points).c_str(),
-                      fraction(t.named, t.caught).c_str(),
-                      fraction(t.image_only_named, t.image_only).c_str());
+        std::snprintf(
+            line, sizeof line, "%-18s %8zu %6zu %11s %6s %10s %6s %6s\n", name.c_str(), t.mistakes,
+            t.caught, points_text(t.points).c_str(), fraction(t.named, t.caught).c_str(),
+            fraction(t.image_only_named, t.image_only).c_str(),
+            fraction(t.by_evidence, t.state).c_str(), fraction(t.by_file, t.shaders).c_str());
         table += line;
     };
     for (const auto& [l, t] : tally) {
@@ -376,6 +429,8 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
         sum.mistakes += t.mistakes, sum.caught += t.caught, sum.points += t.points;
         sum.named += t.named, sum.image_only += t.image_only;
         sum.image_only_named += t.image_only_named;
+        sum.state += t.state, sum.by_evidence += t.by_evidence;
+        sum.shaders += t.shaders, sum.by_file += t.by_file;
         sum.unnamed.insert(sum.unnamed.end(), t.unnamed.begin(), t.unnamed.end());
     }
     row("total", sum);

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <thread>
 
 #include "framework/error.hpp"
@@ -43,6 +44,81 @@ std::string on_path(const std::string& name) {
     return "";
 }
 
+// JavaScript: the violations of a page, as axe-core would find them at WCAG
+// 2 AA for the rules the course's pages could break (Debian packages no
+// axe-core, so they are checked here by script): each [rule, target, what].
+// - color-contrast: each text node's colour against the background behind it
+//   (the first opaque one among its ancestors, translucent ones blended over
+//   it), WCAG's contrast ratio of relative luminances, 4.5:1 (3:1 for large
+//   text: 24px, or 18.66px bold);
+// - empty-table-header: every <th> has text (visually hidden text counts);
+//   table-header: every <table> has a <th>;
+// - heading-order: a heading is at most one level below the one before it;
+//   page-has-heading-one: there is an <h1>;
+// - image-alt: every <img> has alt text; svg-img-alt and role-img-alt: every
+//   element of role img (an inline <svg> too) has a name, by aria-label or
+//   by aria-labelledby naming elements with text;
+// - landmark-one-main: exactly one <main>;
+// - region: every text node is inside a landmark (main, nav, aside, a header
+//   or footer of the body, or an element with a landmark role);
+// - duplicate-id: no id used twice (which the HTML checker refuses too).
+const char* const kAccessibilityJs = R"JS((() => {
+  const target = e => { const p = []; for (; e && e !== document.body; e = e.parentElement) {
+      if (e.id) { p.unshift('#' + e.id); break; }
+      p.unshift(e.tagName.toLowerCase() + (e.className ? '.' + [...e.classList].join('.') : ''));
+    } return p.join(' > '); };
+  const rgba = c => { const m = c.match(/[\d.]+/g).map(Number); return [m[0], m[1], m[2], m.length > 3 ? m[3] : 1]; };
+  const lin = v => { v /= 255; return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4); };
+  const luminance = c => 0.2126 * lin(c[0]) + 0.7152 * lin(c[1]) + 0.0722 * lin(c[2]);
+  const over = (top, under) => [0, 1, 2].map(i => top[i] * top[3] + under[i] * (1 - top[3])).concat(1);
+  const background = e => { const layers = [];
+    for (; e; e = e.parentElement) { const c = rgba(getComputedStyle(e).backgroundColor);
+      if (c[3] > 0) layers.push(c); if (c[3] >= 1) break; }
+    return layers.reverse().reduce((under, top) => over(top, under), [255, 255, 255, 1]); };
+  const out = [];
+  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+  let texts = 0;
+  for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+    if (!n.textContent.trim()) continue;
+    const e = n.parentElement, s = getComputedStyle(e);
+    if (s.display === 'none' || s.visibility === 'hidden') continue;
+    ++texts;
+    const bg = background(e), fg = over(rgba(s.color), bg);
+    const l1 = luminance(fg), l2 = luminance(bg);
+    const ratio = (Math.max(l1, l2) + 0.05) / (Math.min(l1, l2) + 0.05);
+    const size = parseFloat(s.fontSize), large = size >= 24 || (size >= 18.66 && +s.fontWeight >= 700);
+    if (ratio < (large ? 3 : 4.5))
+      out.push(['color-contrast', target(e), ratio.toFixed(2) + ':1, ' + s.color + ' on rgb(' + bg.slice(0, 3) + ')']);
+    if (!e.closest('main, nav, aside, body > header, body > footer, [role=main], [role=navigation], ' +
+                   '[role=banner], [role=contentinfo], [role=complementary], [role=region], [role=search]'))
+      out.push(['region', target(e), 'text outside every landmark: ' + n.textContent.trim().slice(0, 40)]);
+  }
+  document.querySelectorAll('th').forEach(th => { if (!th.textContent.trim())
+    out.push(['empty-table-header', target(th), 'a table header without text']); });
+  document.querySelectorAll('table').forEach(t => { if (!t.querySelector('th'))
+    out.push(['table-header', target(t), 'a table without a header cell']); });
+  let level = 0, ones = 0;
+  document.querySelectorAll('h1, h2, h3, h4, h5, h6').forEach(h => { const l = +h.tagName[1];
+    if (l > level + 1) out.push(['heading-order', target(h), 'h' + l + ' after h' + level]);
+    level = l; ones += l === 1; });
+  if (ones === 0) out.push(['page-has-heading-one', 'body', 'no h1']);
+  const named = e => { const by = e.getAttribute('aria-labelledby');
+    const text = (by ? by.split(/\s+/).map(id => document.getElementById(id))
+                          .map(l => l ? l.textContent : '').join(' ') : '') +
+                 (e.getAttribute('aria-label') || '');
+    return text.trim() !== ''; };
+  document.querySelectorAll('img').forEach(i => { if (!i.hasAttribute('alt'))
+    out.push(['image-alt', target(i), 'an image without alt text']); });
+  document.querySelectorAll('[role=img]').forEach(i => { if (!named(i))
+    out.push([i.tagName.toLowerCase() === 'svg' ? 'svg-img-alt' : 'role-img-alt', target(i),
+              'an image without a name (aria-label or aria-labelledby)']); });
+  const mains = document.querySelectorAll('main, [role=main]').length;
+  if (mains !== 1) out.push(['landmark-one-main', 'body', mains + ' main landmarks']);
+  const ids = {};
+  document.querySelectorAll('[id]').forEach(e => { if (ids[e.id]) out.push(['duplicate-id', '#' + e.id, 'id used twice']); ids[e.id] = 1; });
+  return {texts, violations: out};
+})())JS";
+
 }  // namespace
 
 std::string chromium_path() {
@@ -52,19 +128,35 @@ std::string chromium_path() {
     return "";
 }
 
+namespace {
+
+const char* const kNoChromium =
+    "no Chromium: scripts/test.sh installs Debian's chromium package (or set LAB_CHROMIUM)";
+
+bool browser_required() {
+    const char* require = std::getenv("LAB_REQUIRE_BROWSER");
+    return require && std::string(require) == "1";
+}
+
+}  // namespace
+
 std::string chromium_or_skip() {
     std::string path = chromium_path();
     if (!path.empty()) return path;
-    const char* require = std::getenv("LAB_REQUIRE_BROWSER");
-    const std::string why =
-        "no Chromium: scripts/test.sh installs Debian's chromium package (or set LAB_CHROMIUM)";
-    if (require && std::string(require) == "1") {
-        FAIL(why << "; LAB_REQUIRE_BROWSER=1 asks for it");
+    if (browser_required()) {
+        FAIL(kNoChromium << "; LAB_REQUIRE_BROWSER=1 asks for it");
         return "";
     }
-    std::printf("SKIP: %s\n", why.c_str());
+    std::printf("SKIP: %s\n", kNoChromium);
     std::fflush(stdout);
     std::_Exit(77);
+}
+
+bool chromium_for_case() {
+    if (!chromium_path().empty()) return true;
+    if (browser_required()) FAIL(kNoChromium << "; LAB_REQUIRE_BROWSER=1 asks for it");
+    MESSAGE("SKIP this case: " << kNoChromium);
+    return false;
 }
 
 std::string base64_decode(const std::string& text) {
@@ -298,6 +390,36 @@ Image Browser::screenshot(const std::string& png_path) {
         write_text(png_path, bytes);
     }
     return decode_png(bytes, "the screenshot of the page");
+}
+
+json check_accessibility(Browser& browser) {
+    const json found = browser.evaluate(kAccessibilityJs);
+    MESSAGE(found["texts"] << " text nodes looked at, " << found["violations"].size()
+                           << " violations");
+    std::map<std::string, int> per_rule;
+    for (const json& v : found["violations"])
+        if (++per_rule[v[0]] <= 5)
+            FAIL_CHECK(v[0].get<std::string>()
+                       << " " << v[1].get<std::string>() << ": " << v[2].get<std::string>());
+    for (const auto& [rule, count] : per_rule) MESSAGE(rule << ": " << count << " elements");
+    CHECK(found["violations"].empty());
+    return found;
+}
+
+std::optional<CommandResult> parse_html_strictly(const std::string& path) {
+    const CommandResult probe = run_command("/usr/bin/python3 -c 'import html5lib'");
+    if (probe.exit_code != 0) {
+        const char* require = std::getenv("LAB_REQUIRE_BROWSER");
+        const std::string why = "no python3-html5lib: scripts/test.sh installs it";
+        if (require && std::string(require) == "1")
+            FAIL(why << "; LAB_REQUIRE_BROWSER=1 asks for it");
+        MESSAGE("SKIP this case: " << why);
+        return std::nullopt;
+    }
+    return run_command(
+        "/usr/bin/python3 -c 'import sys, html5lib; "
+        "html5lib.HTMLParser(strict=True).parse(open(sys.argv[1], \"rb\")); print(\"ok\")' " +
+        shell_quote(path));
 }
 
 }  // namespace fw::test

@@ -9,10 +9,12 @@
 
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "framework/image.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace fw::test {
 
@@ -25,6 +27,11 @@ std::string chromium_path();
 // SKIP) with the reason, or fails when LAB_REQUIRE_BROWSER=1 (CI sets it).
 // Returns the browser's path otherwise.
 std::string chromium_or_skip();
+
+// For one case that needs a browser in a test whose other cases do not:
+// true where there is one; else false after saying why (the case is then
+// skipped), or a failure when LAB_REQUIRE_BROWSER=1.
+bool chromium_for_case();
 
 // Standard base64 (RFC 4648), decoded independently of the reports' encoder;
 // throws on a character outside its alphabet.
@@ -76,5 +83,17 @@ private:
     std::vector<nlohmann::json> events_;  // events not yet waited for
     std::vector<std::string> page_errors_;
 };
+
+// The page's accessibility, checked by script as axe-core checks it at WCAG
+// 2 AA for the rules a course's page could break (browser.cpp lists them):
+// a failed check per violation (five a rule), and the whole finding,
+// {"texts": text nodes looked at, "violations": [[rule, target, what]...]}.
+nlohmann::json check_accessibility(Browser& browser);
+
+// The HTML file at `path` parsed by html5lib (python3-html5lib, WHATWG's
+// parsing algorithm) in strict mode, which refuses any parse error: its exit
+// status and output, "ok\n" when it parsed. nullopt, after saying why, where
+// html5lib is missing (a failure when LAB_REQUIRE_BROWSER=1).
+std::optional<CommandResult> parse_html_strictly(const std::string& path);
 
 }  // namespace fw::test

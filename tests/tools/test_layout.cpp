@@ -1,16 +1,18 @@
 // The repository's layout, read from its files (no build, no GL): grading's rooms include only
 // rooms below them, framework and grading headers include no cycle, every repository path and
 // docs section that a comment or a Markdown page cites exists, functions and files keep to
-// the sizes of docs/conventions.md; and a lab's files with student parts neither register the
-// lab nor include nlohmann/json.hpp.
+// the sizes of docs/conventions.md; a lab's files with student parts neither register the
+// lab nor include nlohmann/json.hpp; and each lab sheet's parts and Files: list name the files
+// whose `// STUDENT:` lines hold a TODO (docs/conventions.md, Student parts).
 //
 // The files read are those of framework/ grading/ labs/ shaders/ tests/ bench/ scripts/ docs/
 // and README.md that git lists or would add (build*/ and third_party/ left out). Read are:
-// - Comments: `//` and `/* */` in C++ and GLSL, `#` in shell scripts and CMakeLists.txt.
+// - Comments: `//` and `/* */` in C++, GLSL and the labs' checkpoints.json files (JSON with
+//   `//` comments), `#` in shell scripts and CMakeLists.txt.
 //   Consecutive comment lines are one text, so a citation may wrap. Markdown pages (docs/*.md,
-//   README.md, labs/*/README.md) are read paragraph by paragraph.
+//   README.md, labs/*/README.md) are read paragraph by paragraph, HTML comments left out.
 // - A cited path is a word starting with framework/ grading/ labs/ shaders/ tests/ bench/
-//   scripts/ docs/ third_party/ or .ci/ that does not continue another word or path (so
+//   scripts/ docs/ third_party/ cmake/ or .ci/ that does not continue another word or path (so
 //   build/grade/, /autograder/tests/ and $OUT/docs/ are no repository paths), up to the first
 //   character that cannot be in a path (so `:12-30` is left out) and without a trailing `.`.
 //   NN_name and NN_* stand for any lab folder, `*` and an upper-case word (NAME, CHECKPOINT;
@@ -48,8 +50,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // grading's rooms, lowest floor first: a room includes only itself and the rooms below.
-const std::vector<std::string> kRooms = {"sandbox", "results", "run",       "units",   "judge",
-                                         "report",  "release", "platforms", "commands"};
+const std::vector<std::string> kRooms = {"sandbox", "results", "run",       "units",    "judge",
+                                         "report",  "release", "platforms", "commands", "class"};
 // The lab that README's "Adding a lab" makes, in a copy of the tree only
 // (tests/tools/test_new_lab.cpp).
 const std::string kNewLab = "90_warmup";
@@ -294,12 +296,18 @@ bool is_fence(const std::string& s) {
 }
 
 // Markdown: paragraphs; a heading, a table row and a line of a code block each stand alone.
+// An HTML comment, from a line that opens with `<!--` to the line that holds `-->`, shows
+// nothing and cites nothing (a picture still to be made waits there).
 std::vector<Passage> markdown_passages(const std::vector<std::string>& lines) {
     std::vector<Passage> out;
-    bool code = false;
+    bool code = false, hidden = false;
     for (size_t n = 0; n < lines.size(); ++n) {
         const std::string& s = lines[n];
         const size_t start = s.find_first_not_of(' ');
+        if (hidden || (!code && start != std::string::npos && s.compare(start, 4, "<!--") == 0)) {
+            hidden = s.find("-->", hidden ? 0 : start + 4) == std::string::npos;
+            continue;
+        }
         code = code != is_fence(s);
         if (start != std::string::npos)
             add_piece(out, s, int(n) + 1, code || s[start] == '#' || s[start] == '|');
@@ -319,7 +327,7 @@ std::vector<Passage> passages(const Repo& repo, const std::string& f) {
     const std::string ext = fs::path(f).extension().string();
     const std::vector<std::string> lines = read_lines(repo.root / f);
     if (is_markdown(f)) return markdown_passages(lines);
-    if (c_like.count(ext)) return c_comments(lines);
+    if (c_like.count(ext) || fs::path(f).filename() == "checkpoints.json") return c_comments(lines);
     if (ext == ".sh") return hash_comments(lines, true);
     if (fs::path(f).filename() == "CMakeLists.txt") return hash_comments(lines, false);
     return {};
@@ -362,6 +370,10 @@ bool matches_any(const Repo& repo, const std::string& pattern) {
 bool path_exists(const Repo& repo, const std::string& cited) {
     static const std::regex new_lab("(labs|shaders)/" + kNewLab + "(/.*)?");
     if (fs::exists(repo.root / cited) || std::regex_match(cited, new_lab)) return true;
+    // What `course release` writes into a student's copy, beside a lab's
+    // sources: its recorded unit cases and its parts' starting hashes.
+    for (const char* made : {"grading/cases.json", "grading/starting.json"})
+        if (ends_with(cited, made)) return true;
     std::string pattern;
     bool placeholder = false;
     std::stringstream parts(cited);
@@ -371,10 +383,11 @@ bool path_exists(const Repo& repo, const std::string& cited) {
     return matches_any(repo, pattern) || matches_any(repo, "labs/[0-9][0-9]_[^/]+/" + pattern);
 }
 
-std::vector<Problem> path_problems(const Repo& repo, size_t& cited) {
+// `cited` counts every citation, `in_checkpoints` those in a checkpoints.json.
+std::vector<Problem> path_problems(const Repo& repo, size_t& cited, size_t& in_checkpoints) {
     static const std::regex token(
         "(^|[^A-Za-z0-9_./$~}-])((framework|grading|labs|shaders|tests|bench|scripts|docs|"
-        "third_party|\\.ci)/[A-Za-z0-9_.*/-]*)");
+        "third_party|cmake|\\.ci)/[A-Za-z0-9_.*/-]*)");
     std::vector<Problem> out;
     for (const std::string& f : repo.files)
         for (const Passage& p : passages(repo, f))
@@ -383,6 +396,7 @@ std::vector<Problem> path_problems(const Repo& repo, size_t& cited) {
                 std::string path = (*it)[2].str();
                 while (ends_with(path, ".")) path.pop_back();
                 ++cited;
+                in_checkpoints += fs::path(f).filename() == "checkpoints.json";
                 if (path_exists(repo, path)) continue;
                 const int line = p.line_at[size_t(it->position(2))];
                 out.push_back({f + ":" + std::to_string(line),
@@ -642,6 +656,169 @@ std::vector<Problem> student_file_problems(const Repo& repo, size_t& student_fil
     return out;
 }
 
+// A lab sheet against the files that carry its parts' TODOs. A part is a numbered item of
+// the sheet's "What you implement" section (a section without one has one part: its first
+// paragraph that opens with a bold title). The files a part names are the file names in
+// backticks of its lead, the text before the first `:` or `. ` outside backticks: its title,
+// its files and its functions ("**The blend modes**, `fragment_state.cpp`,
+// `set_blend_mode()`:"). The sheet's `Files:` paragraph lists the lab's files. A bare name
+// is a file of labs/NN_name/ or shaders/NN_name/; a name with a `/` is a repository path.
+struct Sheet {
+    std::vector<std::string> parts;  // each part's lead
+    std::string files;               // the Files: paragraph
+};
+
+Sheet read_sheet(const fs::path& path) {
+    static const std::regex item(R"(^[0-9]+\. (.*))");
+    Sheet sheet;
+    std::string* open = nullptr;  // the paragraph being read
+    bool in_section = false, numbered = false;
+    std::smatch m;
+    for (const std::string& line : read_lines(path)) {
+        const bool blank = line.find_first_not_of(' ') == std::string::npos;
+        if (starts_with(line, "## ")) in_section = line == "## What you implement";
+        if (blank || starts_with(line, "#") || std::regex_match(line, item)) open = nullptr;
+        if (starts_with(line, "Files:")) open = &sheet.files;
+        if (in_section && std::regex_match(line, m, item)) {
+            if (!numbered) sheet.parts.clear();
+            numbered = true;
+            sheet.parts.push_back(m[1].str());
+            open = &sheet.parts.back();
+        } else if (in_section && !numbered && sheet.parts.empty() && starts_with(line, "**")) {
+            sheet.parts.push_back(line);
+            open = &sheet.parts.back();
+        } else if (open && !blank) {
+            *open += (open->empty() ? "" : " ") + line.substr(line.find_first_not_of(' '));
+        }
+    }
+    for (std::string& part : sheet.parts) {
+        bool code = false;
+        for (size_t i = 0; i < part.size(); ++i) {
+            code = code != (part[i] == '`');
+            if (!code && (part[i] == ':' || part[i] == '.') &&
+                (i + 1 == part.size() || part[i + 1] == ' ')) {
+                part.resize(i);
+                break;
+            }
+        }
+    }
+    return sheet;
+}
+
+// The file names in backticks of `text` (an extension of a source, a shader or an image).
+std::vector<std::string> named_files(const std::string& text) {
+    static const std::regex name(
+        R"(`([A-Za-z0-9_./*-]+\.(cpp|hpp|vert|frag|geom|tesc|tese|comp|glsl|png))`)");
+    std::vector<std::string> out;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), name);
+         it != std::sregex_iterator(); ++it)
+        out.push_back((*it)[1].str());
+    return out;
+}
+
+// The repository paths that a sheet's `name` stands for (a `*` matches any part of a name).
+std::vector<std::string> resolved(const Repo& repo, const std::string& dir,
+                                  const std::string& name) {
+    std::vector<std::string> candidates = {name};
+    if (name.find('/') == std::string::npos)
+        candidates = {"labs/" + dir + "/" + name, "shaders/" + dir + "/" + name};
+    std::vector<std::string> out;
+    for (const std::string& c : candidates) {
+        std::string pattern;
+        for (const char ch : c)
+            pattern += ch == '*' ? std::string("[^/]*")
+                       : std::string(".^$|()[]{}+?\\").find(ch) != std::string::npos
+                           ? std::string("\\") + ch
+                           : std::string(1, ch);
+        const std::regex re(pattern);
+        for (const std::string& p : repo.all)
+            if (std::regex_match(p, re)) out.push_back(p);
+    }
+    return out;
+}
+
+// The files of lab `dir` with a `// STUDENT:` line that holds a TODO (its tests and grading
+// references left out: docs/conventions.md, Student parts).
+std::set<std::string> todo_files(const Repo& repo, const std::string& dir) {
+    std::set<std::string> out;
+    for (const std::string& f : repo.files) {
+        if (!starts_with(f, "labs/" + dir + "/") && !starts_with(f, "shaders/" + dir + "/"))
+            continue;
+        if (f.find("/tests/") != std::string::npos || f.find("/grading/") != std::string::npos)
+            continue;
+        for (const std::string& line : read_lines(repo.root / f)) {
+            const size_t at = line.find("// STUDENT:");
+            if (at != std::string::npos && line.find("TODO", at) != std::string::npos) {
+                out.insert(f);
+                break;
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<Problem> one_sheet_problems(const Repo& repo, const std::string& dir, size_t& parts) {
+    const std::string sheet_path = "labs/" + dir + "/README.md";
+    const Sheet sheet = read_sheet(repo.root / sheet_path);
+    const std::set<std::string> todos = todo_files(repo, dir);
+    std::vector<Problem> out;
+    auto problem = [&](const std::string& what) { out.push_back({sheet_path, what}); };
+    if (sheet.parts.empty()) problem("no parts under \"## What you implement\"");
+    if (sheet.files.empty()) problem("no paragraph that opens with \"Files:\"");
+    std::set<std::string> in_parts, in_files;
+    std::vector<std::string> previous;  // the files the part before names
+    for (size_t n = 0; n < sheet.parts.size(); ++n) {
+        ++parts;
+        const std::string part = "part " + std::to_string(n + 1) + " (" + sheet.parts[n] + ")";
+        std::vector<std::string> names = named_files(sheet.parts[n]);
+        // A part that names no file is written in the file of the part
+        // before it (lab 8's sampler state: units, wraps, filters, mipmaps
+        // and the two maps, one file).
+        if (names.empty()) names = previous;
+        if (names.empty())
+            problem(part +
+                    " names no file before its first `:` or `.`, and no part before it "
+                    "does: name the file that holds its TODO, then the function");
+        previous = names;
+        for (const std::string& name : names) {
+            const std::vector<std::string> paths = resolved(repo, dir, name);
+            if (paths.empty()) problem(part + " names `" + name + "`, which does not exist");
+            for (const std::string& p : paths) {
+                in_parts.insert(p);
+                if (!todos.count(p))
+                    problem(part + " names " + p +
+                            ", which has no `// STUDENT:` line with a TODO; name the file "
+                            "that holds the part");
+            }
+        }
+    }
+    for (const std::string& name : named_files(sheet.files)) {
+        const std::vector<std::string> paths = resolved(repo, dir, name);
+        if (paths.empty()) problem("Files: names `" + name + "`, which does not exist");
+        in_files.insert(paths.begin(), paths.end());
+    }
+    for (const std::string& f : todos) {
+        if (!in_parts.count(f))
+            problem(f + " has a TODO in a `// STUDENT:` line, and no part names it");
+        if (!in_files.count(f))
+            problem(f + " has a TODO in a `// STUDENT:` line, and the Files: list leaves it out");
+    }
+    return out;
+}
+
+std::vector<Problem> sheet_problems(const Repo& repo, size_t& sheets, size_t& parts) {
+    std::vector<Problem> out;
+    for (const std::string& f : repo.all) {
+        static const std::regex sheet("labs/([0-9][0-9]_[a-z0-9_]+)/README\\.md");
+        std::smatch m;
+        if (!std::regex_match(f, m, sheet)) continue;
+        ++sheets;
+        const std::vector<Problem> here = one_sheet_problems(repo, m[1].str(), parts);
+        out.insert(out.end(), here.begin(), here.end());
+    }
+    return out;
+}
+
 const Repo& repo() {
     static const Repo r = read_repo(fw::test::source_dir());
     return r;
@@ -670,10 +847,11 @@ TEST_CASE("framework and grading headers include no cycle") {
 }
 
 TEST_CASE("every repository path cited in a comment or a Markdown page exists") {
-    size_t cited = 0;
-    const std::vector<Problem> problems = path_problems(repo(), cited);
-    MESSAGE(cited << " paths cited");
+    size_t cited = 0, in_checkpoints = 0;
+    const std::vector<Problem> problems = path_problems(repo(), cited, in_checkpoints);
+    MESSAGE(cited << " paths cited, " << in_checkpoints << " in checkpoints.json comments");
     CHECK(cited > 100);
+    CHECK(in_checkpoints >= 11);  // each lab's file cites its format, framework/checkpoints.hpp
     report(problems);
 }
 
@@ -698,6 +876,15 @@ TEST_CASE("a lab's files with student parts hold neither the lab's class nor JSO
     const std::vector<Problem> problems = student_file_problems(repo(), student_files);
     MESSAGE(student_files << " lab files with student parts");
     CHECK(student_files > 10);
+    report(problems);
+}
+
+TEST_CASE("each lab sheet's parts name the files that hold their TODOs, and Files: lists them") {
+    size_t sheets = 0, parts = 0;
+    const std::vector<Problem> problems = sheet_problems(repo(), sheets, parts);
+    MESSAGE(sheets << " lab sheets, " << parts << " parts");
+    CHECK(sheets >= 7);
+    CHECK(parts > 40);
     report(problems);
 }
 

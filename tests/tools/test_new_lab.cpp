@@ -114,8 +114,8 @@ TEST_CASE("new lab: a copy of lab 0 as labs/90_warmup lists, renders, grades, re
     CHECK(graded.exit_code == 0);
     const nlohmann::json results =
         nlohmann::json::parse(read_text((grade / "results.json").string()));
-    CHECK(results.at("score") == results.at("max_score"));
-    CHECK(results.at("max_score").get<double>() > 0);
+    CHECK(results.at("score") == results.at("extra_data").at("max_score"));
+    CHECK(results.at("extra_data").at("max_score").get<double>() > 0);
 
     // Not released while git does not track it, and the release says so...
     const fs::path release = out / "release";

@@ -12,7 +12,11 @@
 //   for an assignment of some labs, only those labs' files), and
 //   student_versions/<file>: their student versions (`course release`),
 //   which `course autograde` grades in place of a file a submission lacks,
-//   so that a solution is never graded as a student's work.
+//   so that a solution is never graded as a student's work;
+// - solution_shaders/NN_name/FILE: the course's own text of each student
+//   shader, which `course grade` reads to tell which file is wrong once
+//   the submission's files replace the course's (setup.sh and `course
+//   autograde` keep it from the user).
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -24,6 +28,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/file_isolation.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"
@@ -34,9 +39,16 @@ namespace grading {
 
 namespace {
 
-// The scripts, in the repository and at the top of the folder.
+// The scripts, in the repository and at the top of the folder: setup.sh as
+// it is, run_autograder with the folder's lines written in.
 constexpr const char* kTemplates = "grading/platforms/gradescope";
-constexpr const char* kScripts[] = {"setup.sh", "run_autograder"};
+enum class Script { Setup, RunAutograder };
+struct ScriptFile {
+    Script script;
+    const char* name;
+};
+constexpr ScriptFile kScripts[] = {{Script::Setup, "setup.sh"},
+                                   {Script::RunAutograder, "run_autograder"}};
 constexpr const char* kStudentFiles = "student_files.txt";
 constexpr const char* kStudentVersions = "student_versions";
 
@@ -79,7 +91,7 @@ StudentFiles assignment_files(const StudentFiles& all, const std::vector<LabData
 }
 
 FolderPlan plan_folder(const fs::path& source, const std::vector<std::string>& labs) {
-    for (const char* script : kScripts) require_template(source, kTemplates, script);
+    for (const ScriptFile& s : kScripts) require_template(source, kTemplates, s.name);
     FolderPlan plan;
     plan.files = project_files(source.string());
     for (const std::string& rel : plan.files)
@@ -112,19 +124,20 @@ size_t write_folder(const FolderPlan& plan, const fs::path& source, const fs::pa
         copy_entry(source / rel, dest / rel);
         ++copied;
     }
-    for (const char* script : kScripts) {
-        const fs::path from = source / kTemplates / script;
+    for (const ScriptFile& s : kScripts) {
+        const fs::path from = source / kTemplates / s.name;
         std::string text = read_file(from);
-        if (std::string(script) == "run_autograder") {
+        if (s.script == Script::RunAutograder) {
             text = with_line(text, from, "hidden_as=after_due_date",
                              std::string("hidden_as=") + name_of(hidden_as), "--hidden-as");
             if (!plan.labs.empty())
                 text = with_line(text, from, "labs=", "labs=\"" + fw::join(plan.labs, " ") + "\"",
                                  "the labs of an assignment");
         }
-        write_file(dest / script, text, kExecutable);
+        write_file(dest / s.name, text, kExecutable);
     }
     write_student_files(plan.students, dest);
+    write_solution_shaders(plan.students, source, dest);
     return copied;
 }
 
@@ -133,8 +146,8 @@ void print_folder(const FolderPlan& plan, const fs::path& source, size_t copied,
     std::printf("course gradescope: the autograder for %s\n", source.string().c_str());
     std::printf("  %zu files of the repository (solutions and hidden checkpoints included)\n",
                 copied);
-    for (const char* script : kScripts)
-        std::printf("  %-48s from %s/%s\n", script, kTemplates, script);
+    for (const ScriptFile& s : kScripts)
+        std::printf("  %-48s from %s/%s\n", s.name, kTemplates, s.name);
     std::printf("  hidden checkpoints' tests shown on Gradescope: %s (--hidden-as)\n",
                 name_of(hidden_as));
     if (plan.labs.empty())
@@ -147,6 +160,8 @@ void print_folder(const FolderPlan& plan, const fs::path& source, size_t copied,
     std::printf("  %-48s %zu files students edit:\n", kStudentFiles, plan.students.size());
     for (const auto& [rel, text] : plan.students)
         std::printf("    %s (student version in %s/)\n", rel.c_str(), kStudentVersions);
+    std::printf("  %-48s the course's text of the student shaders (which file is wrong)\n",
+                (std::string(kSolutionShaders) + "/").c_str());
     for (const std::string& rel : plan.missing)
         std::printf("  %-48s not copied: tracked by git but missing from the tree\n", rel.c_str());
     std::printf(
@@ -196,6 +211,18 @@ void write_student_files(const StudentFiles& students, const fs::path& dest) {
         write_file(dest / kStudentVersions / rel, text, kReadable);
     }
     write_file(dest / kStudentFiles, list, kReadable);
+}
+
+size_t write_solution_shaders(const StudentFiles& students, const fs::path& source,
+                              const fs::path& dest) {
+    size_t written = 0;
+    for (const auto& [rel, text] : students) {
+        if (rel.rfind("shaders/", 0) != 0) continue;
+        write_file(dest / kSolutionShaders / rel.substr(std::string("shaders/").size()),
+                   read_file(source / rel), kReadable);
+        ++written;
+    }
+    return written;
 }
 
 int gradescope_command(const std::string& out_dir, HiddenAs hidden_as,

@@ -45,8 +45,9 @@ if ! id -u "$user" >/dev/null 2>&1; then
 fi
 # The user may read the sources and build and run `lab`, and nothing more: it
 # writes nothing of the autograder's, and reads neither references nor
-# checkpoint files (hidden checkpoints are the course's). `course grade` checks
-# this before it grades. Submissions are compiled as the user too, so that an
+# checkpoint files (hidden checkpoints are the course's), nor the course's
+# text of the student shaders in solution_shaders/. `course autograde` and
+# `course grade` check this before they grade. Submissions are compiled as the user too, so that an
 # #include of a reference or a checkpoint file cannot quote it back in the
 # compiler's message; the user owns build/, so the trusted `course` is copied
 # out of it, into course-bin/, which stays root's.
@@ -56,6 +57,7 @@ for lab in "$source_dir"/labs/*/; do
   if [ -d "$lab/reference" ]; then chmod 0700 "$lab/reference"; fi
   if [ -f "$lab/checkpoints.json" ]; then chmod 0600 "$lab/checkpoints.json"; fi
 done
+if [ -d "$source_dir/solution_shaders" ]; then chmod 0700 "$source_dir/solution_shaders"; fi
 install -d -m 0755 "$source_dir/course-bin"
 install -m 0755 "$source_dir/build/bin/course" "$source_dir/course-bin/course"
 rm -rf "$source_dir/course-bin/shader-cache"

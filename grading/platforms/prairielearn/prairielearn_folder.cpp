@@ -10,7 +10,10 @@
 //   and references, hidden ones included, which `course autograde` grades
 //   with, and each lab's unit cases (cases.json in its grading folder,
 //   recorded for the autograder, hidden checks too, from a fresh seed): the
-//   image's `course` has no references to draw them from;
+//   image's `course` has no references to draw them from; and
+//   solution_shaders/NN_name/FILE, the course's own text of each student
+//   shader, which `course grade` reads to tell which file is wrong (the
+//   image holds only the student versions);
 // - README.md: how to build the image, and each lab's question files.
 #include <algorithm>
 #include <cstdio>
@@ -22,6 +25,7 @@
 #include "framework/error.hpp"
 #include "grading/judge/cases.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/file_isolation.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"
@@ -106,8 +110,11 @@ run. PrairieLearn pulls only public images, so the course is split in two.
   `serverFilesCourse/{FOLDER}/`, which students cannot read. It holds
   `grade.sh`, the entrypoint, and every lab's checkpoints file and references,
   hidden ones included, with the unit checks' cases (`labs/*/grading/cases.json`,
-  drawn from a new seed each time this folder is written): the image holds no
-  reference code, since that would give the solutions away.
+  drawn from a new seed each time this folder is written) and the course's own
+  text of the shaders students edit (`solution_shaders/`, which tells a student
+  which shader file is wrong): the image holds no reference code, since that
+  would give the solutions away. The grader keeps this folder from the
+  submitted code.
 
 For each submission, `grade.sh LAB` puts the files in `/grade/student` in
 place of the student versions (by name), builds `lab` as the user `student`,
@@ -164,7 +171,8 @@ std::string readme(const Plan& plan) {
     return text;
 }
 
-void write_folder(const Plan& plan, const fs::path& source, const fs::path& dest) {
+// Writes the folder; returns how many solution shaders it holds.
+size_t write_folder(const Plan& plan, const fs::path& source, const fs::path& dest) {
     const fs::path image = dest / "image", data = dest / "serverFilesCourse" / kFolder;
     release_tree(source.string(), (image / "course").string());
     write_file(image / "course" / "setup.sh",
@@ -174,7 +182,9 @@ void write_folder(const Plan& plan, const fs::path& source, const fs::path& dest
     write_file(data / "grade.sh", read_file(source / kTemplates / "grade.sh"), kExecutable);
     for (const std::string& rel : plan.data) copy_entry(source / rel, data / rel);
     for (const auto& [rel, text] : plan.cases) write_file(data / rel, text, kReadable);
+    const size_t shaders = write_solution_shaders(plan.students, source, data);
     write_file(dest / "README.md", readme(plan), kReadable);
+    return shaders;
 }
 
 }  // namespace
@@ -183,7 +193,7 @@ int prairielearn_command(const std::string& out_dir) {
     const fs::path source(source_root()), dest(out_dir);
     require_new_output_dir(dest);
     const Plan plan = plan_folder(source);
-    write_folder(plan, source, dest);
+    const size_t shaders = write_folder(plan, source, dest);
     std::printf("course prairielearn: PrairieLearn's grader for %s\n", source.string().c_str());
     std::printf("  %-40s the image: Dockerfile, course/ (the student version, %zu student files)\n",
                 "image/", plan.students.size());
@@ -193,6 +203,8 @@ int prairielearn_command(const std::string& out_dir) {
     for (const auto& [rel, text] : plan.cases)
         std::printf("    %-38s the unit checks' cases, hidden ones too (seed %u, %zu bytes)\n",
                     rel.c_str(), plan.seed, text.size());
+    std::printf("    %-38s the course's text of %zu student shaders (which file is wrong)\n",
+                (std::string(kSolutionShaders) + "/").c_str(), shaders);
     std::printf("  %-40s how to build the image, and each lab's question\n", "README.md");
     std::printf(
         "Build and push the image from %s/image, and copy %s/serverFilesCourse/%s/ into the "

@@ -3,6 +3,8 @@
 // here again so that the tests never read them from the lab's code.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
@@ -44,6 +46,33 @@ struct Tessellation : fw::test::LabUnderTest {
         return out.stats["primitives_generated"].get<long>();
     }
 };
+
+// Scene lod as README.md defines it: 4 x 4 patches of 2 x 2 over x, z in
+// [-4, 4], the eye at (0, 5, 7), ridges y = A cos(pi x) with A = 0.25, and
+// the level clamp(round(k / d), 1, 64) of a point at distance d from the eye.
+const glm::vec3 kGroundEye{0.0f, 5.0f, 7.0f};
+constexpr float kRidge = 0.25f;
+inline float lod_level(float detail, glm::vec3 p) {
+    return std::clamp(std::round(detail / glm::distance(p, kGroundEye)), 1.0f, 64.0f);
+}
+// The triangles of all 16 patches: the outer levels from the edges'
+// midpoints (u = 0, v = 0, u = 1, v = 1 with u along +x, v along -z), or with
+// from_centre every level from the patch's centre; the inner ones from it.
+inline long lod_primitives(float detail, bool from_centre, Spacing spacing) {
+    long triangles = 0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const float x0 = -4.0f + 2.0f * i, z0 = -4.0f + 2.0f * j;
+            const float x1 = x0 + 2.0f, z1 = z0 + 2.0f, xc = x0 + 1.0f, zc = z0 + 1.0f;
+            const float inner = lod_level(detail, {xc, 0.0f, zc});
+            std::array<float, 4> outer = {
+                lod_level(detail, {x0, 0.0f, zc}), lod_level(detail, {xc, 0.0f, z1}),
+                lod_level(detail, {x1, 0.0f, zc}), lod_level(detail, {xc, 0.0f, z0})};
+            if (from_centre) outer.fill(inner);
+            triangles += quad_patch_triangles({inner, inner}, outer, spacing);
+        }
+    return triangles;
+}
 
 // The sheet's count for a scene: the sphere is 20 triangle patches.
 inline long expected_primitives(const std::string& scene, float inner, float outer, Spacing s) {

@@ -32,6 +32,8 @@ TEST_CASE("tessellation: the declaration has the sheet's parameters and defaults
     CHECK(p.number("K") == 2.0f);
     CHECK(p.number("phase") == 0.0f);
     CHECK(!p.flag("animate"));
+    CHECK(p.number("detail") == 45.0f);
+    CHECK(p.text("lod") == "edges");
     for (const fw::Param& param : lab.info.params) {
         INFO("parameter " << param.name);
         CHECK(!param.help_text.empty());
@@ -210,12 +212,17 @@ TEST_CASE("tessellation: checkpoints.json: its probes and stats hold for the sol
                     Spacing rule = Spacing::Equal;
                     for (const auto& [name, r] : kSpacings)
                         if (params.text("spacing") == name) rule = r;
-                    CHECK(check["equals"].get<long>() ==
-                          expected_primitives(params.text("scene"), params.number("inner"),
-                                              params.number("outer"), rule));
+                    const long expected =
+                        params.text("scene") == "lod"
+                            ? lod_primitives(params.number("detail"),
+                                             params.text("lod") == "centre", rule)
+                            : expected_primitives(params.text("scene"), params.number("inner"),
+                                                  params.number("outer"), rule);
+                    CHECK(check["equals"].get<long>() == expected);
                 }
             }
             fw::test::check_probes_and_stats(cp.checks, out);
         });
     for (const char* scene : kScenes) CHECK(std::count(scenes.begin(), scenes.end(), scene) >= 1);
+    CHECK(std::count(scenes.begin(), scenes.end(), "lod") >= 1);
 }

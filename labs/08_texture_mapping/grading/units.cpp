@@ -37,6 +37,10 @@ float ref_level_of_detail(glm::vec2 d_dx, glm::vec2 d_dy, int width, int height)
 COURSE_REFERENCE(planar, &ref_planar, {grading::vec(3, -2, 2)})
 COURSE_REFERENCE(cylindrical, &ref_cylindrical, {grading::vec(3, -2, 2)})
 COURSE_REFERENCE(spherical, &ref_spherical, {grading::vec(3, -2, 2)})
-COURSE_REFERENCE(level_of_detail, &ref_level_of_detail,
-                 {grading::vec(2, -0.1, 0.1), grading::vec(2, -0.1, 0.1), grading::integer(1, 1024),
-                  grading::integer(1, 1024)})
+COURSE_REFERENCE(
+    level_of_detail, &ref_level_of_detail,
+    {grading::vec(2, -0.1, 0.1), grading::vec(2, -0.1, 0.1), grading::integer(1, 1024),
+     grading::integer(1, 1024)},
+    grading::off_by_one("a mipmap level counted from 1, where level 0 is the full-size texture "
+                        "and lambda = log2(rho) is 0 where a pixel spans one texel; check that "
+                        "your level of detail is log2(rho) with nothing added"))

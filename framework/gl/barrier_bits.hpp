@@ -1,0 +1,30 @@
+// The bits of glMemoryBarrier and their names, in the order GL 4.3 lists
+// them (section 7.12.2): what the record of the draws writes for a barrier,
+// and what a usage finding names as the barrier a read needed.
+#pragma once
+
+#include <glad/gl.h>
+
+namespace fw {
+
+struct BarrierBit {
+    GLbitfield bit;
+    const char* name;
+};
+
+inline constexpr BarrierBit kBarrierBits[] = {
+    {GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT, "GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT"},
+    {GL_ELEMENT_ARRAY_BARRIER_BIT, "GL_ELEMENT_ARRAY_BARRIER_BIT"},
+    {GL_UNIFORM_BARRIER_BIT, "GL_UNIFORM_BARRIER_BIT"},
+    {GL_TEXTURE_FETCH_BARRIER_BIT, "GL_TEXTURE_FETCH_BARRIER_BIT"},
+    {GL_SHADER_IMAGE_ACCESS_BARRIER_BIT, "GL_SHADER_IMAGE_ACCESS_BARRIER_BIT"},
+    {GL_COMMAND_BARRIER_BIT, "GL_COMMAND_BARRIER_BIT"},
+    {GL_PIXEL_BUFFER_BARRIER_BIT, "GL_PIXEL_BUFFER_BARRIER_BIT"},
+    {GL_TEXTURE_UPDATE_BARRIER_BIT, "GL_TEXTURE_UPDATE_BARRIER_BIT"},
+    {GL_BUFFER_UPDATE_BARRIER_BIT, "GL_BUFFER_UPDATE_BARRIER_BIT"},
+    {GL_FRAMEBUFFER_BARRIER_BIT, "GL_FRAMEBUFFER_BARRIER_BIT"},
+    {GL_TRANSFORM_FEEDBACK_BARRIER_BIT, "GL_TRANSFORM_FEEDBACK_BARRIER_BIT"},
+    {GL_ATOMIC_COUNTER_BARRIER_BIT, "GL_ATOMIC_COUNTER_BARRIER_BIT"},
+    {GL_SHADER_STORAGE_BARRIER_BIT, "GL_SHADER_STORAGE_BARRIER_BIT"}};
+
+}  // namespace fw

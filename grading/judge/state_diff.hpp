@@ -1,0 +1,54 @@
+// The state diff: for a checkpoint that failed a check, the student's record
+// of what each draw was told (framework/gl/record.hpp, NAME.record.json from
+// the child) against the solution's, kept by `course bless` beside the
+// reference image (labs/NN_name/reference/CHECKPOINT.record.json). It names
+// the first draw, dispatch, clear or read-back whose live state differs, in
+// GL's terms (the call and its argument) and, where the lab has them, in the
+// sheet's (labs/NN_name/grading/state_words.json); or says that the draws
+// come in another order when they are the reference's, permuted. A record
+// holds only live state and compares values, never calls, so what cannot
+// change a result is never named (docs/contract.md, "The record and the state diff").
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "grading/judge/checks.hpp"
+#include "grading/results/results.hpp"
+
+namespace grading {
+
+// labs/NN_name/reference/CHECKPOINT.record.json, relative to the root.
+std::string reference_record(const LabData& lab, const std::string& checkpoint);
+// Whether the checkpoint has a reference record: grading then asks the
+// child for the student's ("record": true).
+bool has_reference_record(const LabData& lab, const std::string& checkpoint);
+
+// Throws fw::UsageError naming the first reference record of the lab that is
+// not a record of this version (course grade checks them before grading;
+// course bless writes them again).
+void check_reference_records(const LabData& lab);
+
+// Writes the solution's record of `checkpoint` (the child's
+// NAME.record.json) as its reference; throws fw::Error when it is not a
+// record of this version or cannot be written.
+void write_reference_record(const LabData& lab, const std::string& checkpoint,
+                            const std::string& text);
+
+// The sentence that names the first difference between `student` and
+// `reference` (records as record.hpp writes them), or "" when they agree.
+// `words`: the lab's state_words.json (null when it has none); `visible`:
+// the checkpoint is visible, so the reference's own value is not shown.
+std::string state_difference(const nlohmann::json& student, const nlohmann::json& reference,
+                             const fw::Checkpoint& checkpoint, const nlohmann::json& words,
+                             bool visible);
+
+// For a checkpoint with a failed check and a reference record: reads both
+// records and the lab's words, and adds the sentence to the diagnosis (and
+// output) of its first failed check that reads the frame. Nothing when the
+// records agree or cannot be read.
+void add_state_diff(const LabData& lab, const fw::Checkpoint& checkpoint,
+                    const ChildOutputs& outputs, std::vector<CheckResult>& results);
+
+}  // namespace grading
