@@ -1,5 +1,5 @@
 // Lab 11's CPU rasterizer, the student parts (marked TODO): line_dda(),
-// line_bresenham(), covers(), barycentric(), interpolate(), depth_test(),
+// line_bresenham(), top_left(), covers(), barycentric(), interpolate(), depth_test(),
 // clip_near() and to_window(). labs/11_rasterizer/README.md gives each rule.
 #include "raster.hpp"
 
@@ -74,9 +74,7 @@ float edge_function(glm::vec2 a, glm::vec2 b, glm::vec2 p) {
     return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
-namespace {
-
-// The top-left rule for an edge a -> b of a counter-clockwise triangle in
+// Part 3. The top-left rule for an edge a -> b of a counter-clockwise triangle in
 // window coordinates (y up): a left edge goes down, a top edge is horizontal
 // and goes towards -x. A point exactly on such an edge is inside.
 bool top_left(glm::vec2 a, glm::vec2 b) {
@@ -87,8 +85,6 @@ bool top_left(glm::vec2 a, glm::vec2 b) {
     return d.y < 0.0f || (d.y == 0.0f && d.x < 0.0f);
     // END SOLUTION
 }
-
-}  // namespace
 
 // Part 3. Inside when each edge function of the counter-clockwise order is
 // positive, or zero on a top or left edge. A clockwise triangle (negative
