@@ -112,8 +112,7 @@ glm::vec3 barycentric(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 p) {
     // STUDENT: (void)a, (void)b, (void)c, (void)p;
     // STUDENT: return glm::vec3(1.0f, 0.0f, 0.0f);  // TODO: three edge functions over the area
     const float area = edge_function(a, b, c);
-    return glm::vec3(edge_function(b, c, p), edge_function(c, a, p), edge_function(a, b, p)) /
-           area;
+    return glm::vec3(edge_function(b, c, p), edge_function(c, a, p), edge_function(a, b, p)) / area;
     // END SOLUTION
 }
 

@@ -54,8 +54,8 @@ void line_bresenham(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::vec3 color)
 float edge_function(glm::vec2 a, glm::vec2 b, glm::vec2 p);
 
 // Part 3: whether a point on the edge a -> b of a counter-clockwise triangle
-// belongs to it (a left or a top edge); whether the triangle a b c (either winding) covers the point p,
-// with the top-left rule for a p on an edge.
+// belongs to it (a left or a top edge); whether the triangle a b c (either winding) covers the
+// point p, with the top-left rule for a p on an edge.
 bool top_left(glm::vec2 a, glm::vec2 b);
 bool covers(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 p);
 

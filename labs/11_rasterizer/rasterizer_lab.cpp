@@ -35,6 +35,11 @@ constexpr const char* kViewUniform = "u_view";
 constexpr const char* kCpuUniform = "u_cpu";
 constexpr const char* kGlUniform = "u_gl";
 
+// show.frag's u_view for view=gl and view=difference.
+int view_gl_or_difference(const fw::ParamValues& p) {
+    return p[kView] == View::Gl ? VIEW_GL : VIEW_DIFFERENCE;
+}
+
 }  // namespace
 
 class RasterizerLab : public fw::Lab {
@@ -85,9 +90,7 @@ public:
             show(VIEW_CPU, x, y + h / 4, w / 2, h / 2);
             show(VIEW_GL, x + w / 2, y + h / 4, w / 2, h / 2);
         } else {
-            const int view = p[kView] == View::Cpu ? VIEW_CPU
-                             : p[kView] == View::Gl ? VIEW_GL
-                                                    : VIEW_DIFFERENCE;
+            const int view = p[kView] == View::Cpu ? VIEW_CPU : view_gl_or_difference(p);
             show(view, x, y, w, h);
         }
         glBindVertexArray(0);
@@ -126,8 +129,10 @@ private:
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         const bool depth = p[kScene] == Scene::Shading && p[kDepthTest];
-        if (depth) glEnable(GL_DEPTH_TEST);
-        else glDisable(GL_DEPTH_TEST);
+        if (depth)
+            glEnable(GL_DEPTH_TEST);
+        else
+            glDisable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         const bool affine =
             p[kScene] == Scene::Shading && p[kInterpolation] == Interpolation::Affine;

@@ -22,9 +22,9 @@ ClipVertex clip_from_window(const WindowVertex& v) {
 // scene=mesh: 8 triangles around the pixel centre (16.5, 16.5), over the
 // square [4, 28]^2, one colour each.
 std::vector<WindowVertex> mesh_triangles(Winding winding) {
-    const glm::vec2 ring[8] = {{4, 4},   {16.5f, 4}, {28, 4},   {28, 16.5f},
+    const glm::vec2 ring[8] = {{4, 4},   {16.5f, 4},  {28, 4}, {28, 16.5f},
                                {28, 28}, {16.5f, 28}, {4, 28}, {4, 16.5f}};
-    const glm::vec3 colors[8] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0},
+    const glm::vec3 colors[8] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},    {1, 1, 0},
                                  {1, 0, 1}, {0, 1, 1}, {1, 0.5f, 0}, {0.5f, 0.5f, 1}};
     std::vector<WindowVertex> out;
     for (int i = 0; i < 8; ++i) {
@@ -40,8 +40,8 @@ std::vector<WindowVertex> mesh_triangles(Winding winding) {
 // scene=shading: triangle A with a red, a green and a blue corner and
 // different w, then the yellow triangle B, which crosses A in depth.
 std::vector<WindowVertex> shading_triangles() {
-    return {{{2, 2, 0.2f}, 1.0f, kRed},  {{30, 2, 0.2f}, 4.0f, kGreen},
-            {{2, 30, 0.8f}, 1.0f, kBlue}, {{8, 8, 0.9f}, 1.0f, kYellow},
+    return {{{2, 2, 0.2f}, 1.0f, kRed},      {{30, 2, 0.2f}, 4.0f, kGreen},
+            {{2, 30, 0.8f}, 1.0f, kBlue},    {{8, 8, 0.9f}, 1.0f, kYellow},
             {{30, 14, 0.1f}, 1.0f, kYellow}, {{14, 30, 0.1f}, 1.0f, kYellow}};
 }
 
@@ -85,8 +85,8 @@ std::vector<fw::Param> params() {
 }
 
 std::vector<Line> scene_lines(bool reverse) {
-    std::vector<Line> lines = {{{1, 1}, {12, 5}},   {{30, 1}, {19, 6}},  {{12, 30}, {1, 27}},
-                               {{19, 30}, {30, 26}}, {{2, 9}, {7, 20}},   {{10, 20}, {13, 9}},
+    std::vector<Line> lines = {{{1, 1}, {12, 5}},    {{30, 1}, {19, 6}}, {{12, 30}, {1, 27}},
+                               {{19, 30}, {30, 26}}, {{2, 9}, {7, 20}},  {{10, 20}, {13, 9}},
                                {{22, 9}, {18, 20}},  {{29, 20}, {24, 9}}};
     if (reverse)
         for (Line& l : lines) std::swap(l.a, l.b);
@@ -106,9 +106,15 @@ GlScene gl_scene(const fw::ParamValues& p) {
                     out.vertices.push_back(
                         clip_from_window({{glm::vec2(end) + 0.5f, 0.5f}, 1.0f, kWhite}));
             break;
-        case Scene::Mesh: add_window(mesh_triangles(p[kWinding])); break;
-        case Scene::Shading: add_window(shading_triangles()); break;
-        case Scene::Clipping: out.vertices = clipping_triangle(p[kBehind]); break;
+        case Scene::Mesh:
+            add_window(mesh_triangles(p[kWinding]));
+            break;
+        case Scene::Shading:
+            add_window(shading_triangles());
+            break;
+        case Scene::Clipping:
+            out.vertices = clipping_triangle(p[kBehind]);
+            break;
     }
     return out;
 }
@@ -118,8 +124,10 @@ CpuScene cpu_scene(const fw::ParamValues& p) {
     switch (p[kScene]) {
         case Scene::Lines:
             for (const Line& l : scene_lines(p[kReverse])) {
-                if (p[kAlgorithm] == Algorithm::Dda) line_dda(out.canvas, l.a, l.b, kWhite);
-                else line_bresenham(out.canvas, l.a, l.b, kWhite);
+                if (p[kAlgorithm] == Algorithm::Dda)
+                    line_dda(out.canvas, l.a, l.b, kWhite);
+                else
+                    line_bresenham(out.canvas, l.a, l.b, kWhite);
             }
             break;
         case Scene::Mesh:

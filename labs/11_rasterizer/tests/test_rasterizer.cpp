@@ -56,6 +56,13 @@ TEST_CASE("rasterizer: lines from (0, 0) to (5, 2) and back, by DDA and Bresenha
 }
 
 TEST_CASE("rasterizer: a quad as two triangles fills each covered pixel centre once") {
+    // Counter-clockwise, y up: a top edge runs towards -x, a left edge down.
+    CHECK(rasterizer::top_left({3, 1}, {1, 1}));
+    CHECK_FALSE(rasterizer::top_left({1, 1}, {3, 1}));
+    CHECK(rasterizer::top_left({1, 3}, {1, 1}));
+    CHECK_FALSE(rasterizer::top_left({1, 1}, {1, 3}));
+    CHECK(rasterizer::top_left({2, 3}, {1, 1}));
+    CHECK_FALSE(rasterizer::top_left({1, 1}, {2, 3}));
     // The square [1, 5] x [1, 4] split along its diagonal: centres 1.5..4.5 by
     // 1.5..3.5, 4 x 3 = 12 pixels, the diagonal's centres owned by one side.
     for (bool clockwise : {false, true}) {
@@ -63,7 +70,8 @@ TEST_CASE("rasterizer: a quad as two triangles fills each covered pixel centre o
         const glm::vec2 q[4] = {{1, 1}, {5, 1}, {5, 4}, {1, 4}};
         for (const auto& t : {std::vector<int>{0, 1, 2}, std::vector<int>{0, 2, 3}}) {
             rasterizer::WindowVertex v[3];
-            for (int i = 0; i < 3; ++i) v[i] = {{q[t[clockwise ? 2 - i : i]], 0.5f}, 1.0f, glm::vec3(1)};
+            for (int i = 0; i < 3; ++i)
+                v[i] = {{q[t[clockwise ? 2 - i : i]], 0.5f}, 1.0f, glm::vec3(1)};
             rasterizer::fill_triangle(c, v, true, false);
         }
         INFO("clockwise " << clockwise);
@@ -73,12 +81,12 @@ TEST_CASE("rasterizer: a quad as two triangles fills each covered pixel centre o
     // A vertical shared edge through the centres x = 2.5: the left edge of the
     // right triangle (owned), the right edge of the left one (not).
     Canvas c(8, 8);
-    const rasterizer::WindowVertex left[3] = {
-        {{0, 0, 0.5f}, 1, glm::vec3(1, 0, 0)}, {{2.5f, 0, 0.5f}, 1, glm::vec3(1, 0, 0)},
-        {{2.5f, 4, 0.5f}, 1, glm::vec3(1, 0, 0)}};
-    const rasterizer::WindowVertex right[3] = {
-        {{2.5f, 0, 0.5f}, 1, glm::vec3(0, 1, 0)}, {{5, 0, 0.5f}, 1, glm::vec3(0, 1, 0)},
-        {{2.5f, 4, 0.5f}, 1, glm::vec3(0, 1, 0)}};
+    const rasterizer::WindowVertex left[3] = {{{0, 0, 0.5f}, 1, glm::vec3(1, 0, 0)},
+                                              {{2.5f, 0, 0.5f}, 1, glm::vec3(1, 0, 0)},
+                                              {{2.5f, 4, 0.5f}, 1, glm::vec3(1, 0, 0)}};
+    const rasterizer::WindowVertex right[3] = {{{2.5f, 0, 0.5f}, 1, glm::vec3(0, 1, 0)},
+                                               {{5, 0, 0.5f}, 1, glm::vec3(0, 1, 0)},
+                                               {{2.5f, 4, 0.5f}, 1, glm::vec3(0, 1, 0)}};
     rasterizer::fill_triangle(c, left, true, false);
     rasterizer::fill_triangle(c, right, true, false);
     CHECK(max_writes(c) == 1);
@@ -121,8 +129,8 @@ void check_bounds(const nlohmann::json& checks, const fw::RenderOutput& out) {
     for (const nlohmann::json& check : checks) {
         if (check.at("kind") != "stat" || check.contains("equals")) continue;
         const std::string path = check.at("stat").get<std::string>();
-        const nlohmann::json value = out.stats.at(nlohmann::json::json_pointer(
-            "/" + std::regex_replace(path, std::regex("\\."), "/")));
+        const nlohmann::json value = out.stats.at(
+            nlohmann::json::json_pointer("/" + std::regex_replace(path, std::regex("\\."), "/")));
         INFO(path << " = " << value.dump());
         if (check.contains("min")) CHECK(value.get<double>() >= check["min"].get<double>());
         if (check.contains("max")) CHECK(value.get<double>() <= check["max"].get<double>());
