@@ -46,7 +46,7 @@ void line_dda(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::vec3 color) {
 
 // Part 2. Bresenham in every octant and both directions, with integers
 // only: step the major axis each time; an error term says when the minor
-// axis steps too (README.md, part 2). Same pixels as line_dda().
+// axis steps too (README.md, What you implement). Same pixels as line_dda().
 void line_bresenham(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::vec3 color) {
     // BEGIN SOLUTION
     // STUDENT: (void)canvas, (void)a, (void)b, (void)color;  // TODO: integer error term
