@@ -22,22 +22,23 @@ void plot(Canvas& canvas, int x, int y, glm::vec3 color) {
     ++canvas.writes[static_cast<size_t>(canvas.index(x, y))];
 }
 
-// Part 1. DDA: n = max(|dx|, |dy|) steps of (dx / n, dy / n) from a, each
-// rounded to the nearest pixel; both ends plotted (a single pixel when a == b).
+// Part 1. DDA: n = max(|dx|, |dy|) steps; step i is at a + i * (dx, dy) / n,
+// rounded to the nearest pixel, a tie (x.5) up; both ends plotted (a single
+// pixel when a == b). i * dx / n as one division is exact at a tie.
 void line_dda(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::vec3 color) {
     // BEGIN SOLUTION
-    // STUDENT: (void)canvas, (void)a, (void)b, (void)color;  // TODO: n + 1 plots, x += dx / n
+    // STUDENT: (void)canvas, (void)a, (void)b, (void)color;  // TODO: n + 1 plots, a + i * d / n
     const glm::ivec2 d = b - a;
     const int n = std::max(std::abs(d.x), std::abs(d.y));
     if (n == 0) {
         plot(canvas, a.x, a.y, color);
         return;
     }
-    const float step_x = static_cast<float>(d.x) / static_cast<float>(n);
-    const float step_y = static_cast<float>(d.y) / static_cast<float>(n);
     for (int i = 0; i <= n; ++i) {
-        const float x = static_cast<float>(a.x) + step_x * static_cast<float>(i);
-        const float y = static_cast<float>(a.y) + step_y * static_cast<float>(i);
+        const float x =
+            static_cast<float>(a.x) + static_cast<float>(i * d.x) / static_cast<float>(n);
+        const float y =
+            static_cast<float>(a.y) + static_cast<float>(i * d.y) / static_cast<float>(n);
         plot(canvas, static_cast<int>(std::floor(x + 0.5f)), static_cast<int>(std::floor(y + 0.5f)),
              color);
     }

@@ -23,6 +23,7 @@
 #include "framework/lab.hpp"
 #include "raster.hpp"
 #include "scenes.hpp"
+#include "unit_calls.hpp"
 // A_POSITION, A_COLOR, OUTPUT_*, VIEW_*: shared with the shaders.
 #include "shared.glsl"
 
@@ -49,6 +50,16 @@ public:
         i.title = "The pipeline by hand";
         i.aspect = 1.0;  // a square scene: letterboxed in a frame of another shape
         i.params = params();
+        // What the unit checks call (unit_calls.hpp).
+        i.functions = {fw::unit_function("line_dda", &line_dda_pixels),
+                       fw::unit_function("line_bresenham", &line_bresenham_pixels),
+                       fw::unit_function("top_left", &top_left),
+                       fw::unit_function("covers", &covers),
+                       fw::unit_function("barycentric", &barycentric),
+                       fw::unit_function("interpolate", &interpolate_at),
+                       fw::unit_function("depth_test", &depth_test_at),
+                       fw::unit_function("clip_near", &clip_near_at),
+                       fw::unit_function("to_window", &to_window_at)};
         return i;
     }
 
