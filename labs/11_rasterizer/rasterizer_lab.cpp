@@ -53,8 +53,8 @@ public:
         // What the unit checks call (unit_calls.hpp).
         i.functions = {fw::unit_function("line_dda", &line_dda_pixels),
                        fw::unit_function("line_bresenham", &line_bresenham_pixels),
-                       fw::unit_function("top_left", &top_left),
-                       fw::unit_function("covers", &covers),
+                       fw::unit_function("top_left", &top_left_both),
+                       fw::unit_function("covers", &covers_centres),
                        fw::unit_function("barycentric", &barycentric),
                        fw::unit_function("interpolate", &interpolate_at),
                        fw::unit_function("depth_test", &depth_test_at),

@@ -33,6 +33,20 @@ std::vector<glm::vec3> line_bresenham_pixels(int ax, int ay, int bx, int by) {
     return written(canvas);
 }
 
+glm::vec2 top_left_both(glm::vec2 a, glm::vec2 b) {
+    return {top_left(a, b) ? 1.0f : 0.0f, top_left(b, a) ? 1.0f : 0.0f};
+}
+
+std::vector<glm::vec2> covers_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+    std::vector<glm::vec2> out;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const glm::vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+            if (covers(a, b, c, centre)) out.push_back(centre);
+        }
+    return out;
+}
+
 glm::vec4 interpolate_at(glm::vec3 c0, glm::vec3 c1, glm::vec3 c2, glm::vec3 z, glm::vec3 w,
                          glm::vec3 weights, bool perspective) {
     const WindowVertex v[3] = {{{0.0f, 0.0f, z[0]}, w[0], c0},

@@ -15,6 +15,13 @@ namespace rasterizer {
 std::vector<glm::vec3> line_dda_pixels(int ax, int ay, int bx, int by);
 std::vector<glm::vec3> line_bresenham_pixels(int ax, int ay, int bx, int by);
 
+// top_left() of the edge a -> b and of its reverse b -> a, 1 for true.
+glm::vec2 top_left_both(glm::vec2 a, glm::vec2 b);
+
+// The centres (x + 0.5, y + 0.5) of an 8 x 8 canvas that covers() puts in
+// the triangle a b c, row by row from the bottom.
+std::vector<glm::vec2> covers_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c);
+
 // interpolate() for corners of colours c0, c1, c2, window depths z and clip
 // w, at the weights `weights` divided by their sum: (r, g, b, depth).
 glm::vec4 interpolate_at(glm::vec3 c0, glm::vec3 c1, glm::vec3 c2, glm::vec3 z, glm::vec3 w,

@@ -76,6 +76,21 @@ bool ref_covers(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 p) {
     return true;
 }
 
+// An edge and its reverse: one of the two is top-left (a point on an edge
+// shared by two triangles belongs to one of them), neither when a == b.
+glm::vec2 ref_top_left_both(glm::vec2 a, glm::vec2 b) {
+    return {ref_top_left(a, b) ? 1.0f : 0.0f, ref_top_left(b, a) ? 1.0f : 0.0f};
+}
+
+// The centres of the 8 x 8 canvas the triangle covers, row by row.
+std::vector<glm::vec2> ref_covers_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+    std::vector<glm::vec2> out;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            if (ref_covers(a, b, c, {x + 0.5f, y + 0.5f})) out.emplace_back(x + 0.5f, y + 0.5f);
+    return out;
+}
+
 // Areas of the triangles p makes with each opposite edge, over the whole.
 glm::vec3 ref_barycentric(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 p) {
     const double area = cross(a, b, c);
@@ -131,10 +146,9 @@ COURSE_REFERENCE(line_dda, &ref_line_dda,
 COURSE_REFERENCE(line_bresenham, &ref_line_bresenham,
                  {grading::integer(0, 31), grading::integer(0, 31), grading::integer(0, 31),
                   grading::integer(0, 31)})
-COURSE_REFERENCE(top_left, &ref_top_left, {grading::vec(2, -4, 4), grading::vec(2, -4, 4)})
-COURSE_REFERENCE(covers, &ref_covers,
-                 {grading::vec(2, 0, 8), grading::vec(2, 0, 8), grading::vec(2, 0, 8),
-                  grading::vec(2, 0, 8)})
+COURSE_REFERENCE(top_left, &ref_top_left_both, {grading::vec(2, -4, 4), grading::vec(2, -4, 4)})
+COURSE_REFERENCE(covers, &ref_covers_centres,
+                 {grading::vec(2, 0, 8), grading::vec(2, 0, 8), grading::vec(2, 0, 8)})
 COURSE_REFERENCE(barycentric, &ref_barycentric,
                  {grading::vec(2, 0, 32), grading::vec(2, 0, 32), grading::vec(2, 0, 32),
                   grading::vec(2, 0, 32)},
