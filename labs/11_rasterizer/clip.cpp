@@ -1,6 +1,6 @@
 // Lab 11's clipping and viewport mapping, the student parts (marked TODO)
 // clip_near() and to_window(), and the loops that drive the CPU rasterizer
-// over a triangle (fill_triangle(), draw_clip_triangle()).
+// over a triangle (shade_pixel(), fill_triangle(), draw_clip_triangle()).
 #include <algorithm>
 #include <cmath>
 
@@ -48,6 +48,17 @@ WindowVertex to_window(const ClipVertex& v, int width, int height) {
     // END SOLUTION
 }
 
+void shade_pixel(Canvas& canvas, const WindowVertex v[3], int x, int y, bool perspective,
+                 bool depth) {
+    const glm::vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    const Fragment f = interpolate(
+        v,
+        barycentric(glm::vec2(v[0].window), glm::vec2(v[1].window), glm::vec2(v[2].window), centre),
+        perspective);
+    if (depth && !depth_test(canvas, x, y, f.depth)) return;
+    plot(canvas, x, y, f.color);
+}
+
 void fill_triangle(Canvas& canvas, const WindowVertex v[3], bool perspective, bool depth) {
     const glm::vec2 a(v[0].window), b(v[1].window), c(v[2].window);
     const glm::vec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
@@ -59,10 +70,7 @@ void fill_triangle(Canvas& canvas, const WindowVertex v[3], bool perspective, bo
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
             const glm::vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-            if (!covers(a, b, c, centre)) continue;
-            const Fragment f = interpolate(v, barycentric(a, b, c, centre), perspective);
-            if (depth && !depth_test(canvas, x, y, f.depth)) continue;
-            plot(canvas, x, y, f.color);
+            if (covers(a, b, c, centre)) shade_pixel(canvas, v, x, y, perspective, depth);
         }
 }
 

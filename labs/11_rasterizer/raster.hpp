@@ -70,9 +70,15 @@ bool depth_test(Canvas& canvas, int x, int y, float z);
 std::vector<ClipVertex> clip_near(const ClipVertex tri[3]);
 WindowVertex to_window(const ClipVertex& v, int width, int height);
 
-// Every pixel whose centre the triangle covers, interpolated, depth-tested
-// when `depth` is on, and plotted.
+// Pixel (x, y) of the triangle: its centre's barycentric coordinates,
+// interpolate(), depth_test() when `depth` is on, then plot().
+void shade_pixel(Canvas& canvas, const WindowVertex v[3], int x, int y, bool perspective,
+                 bool depth);
+// Every pixel whose centre the triangle covers, by shade_pixel().
 void fill_triangle(Canvas& canvas, const WindowVertex v[3], bool perspective, bool depth);
+// Part 6: the same pixels, colours and depths, row by row: each row's span
+// between the left and the right edges.
+void fill_triangle_scanline(Canvas& canvas, const WindowVertex v[3], bool perspective, bool depth);
 // clip_near(), then each triangle of the fan (0, i, i + 1) through
 // to_window() and fill_triangle(); returns the number of triangles filled.
 int draw_clip_triangle(Canvas& canvas, const ClipVertex tri[3], bool perspective, bool depth);

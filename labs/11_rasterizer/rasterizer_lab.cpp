@@ -14,7 +14,8 @@
 // outputs, glTexSubImage2D (the CPU image), GL_NEAREST magnification.
 // Student parts (marked TODO): line_dda(), line_bresenham(), covers() (with
 // top_left()), barycentric(), interpolate() and depth_test() in raster.cpp,
-// clip_near() and to_window() in clip.cpp.
+// clip_near() and to_window() in clip.cpp, fill_triangle_scanline() in
+// scanline.cpp.
 #include <cstddef>
 #include <vector>
 
@@ -55,6 +56,7 @@ public:
                        fw::unit_function("line_bresenham", &line_bresenham_pixels),
                        fw::unit_function("top_left", &top_left_both),
                        fw::unit_function("covers", &covers_centres),
+                       fw::unit_function("fill_triangle_scanline", &scanline_centres),
                        fw::unit_function("barycentric", &barycentric),
                        fw::unit_function("interpolate", &interpolate_at),
                        fw::unit_function("depth_test", &depth_test_at),

@@ -67,7 +67,8 @@ std::vector<fw::Param> params() {
             .help("split: the CPU image left, GL's right; cpu; gl; difference: |cpu - gl|")
             .key('V'),
         fw::Param::choice(kAlgorithm, kAlgorithms, Algorithm::Bresenham)
-            .help("which line algorithm the CPU uses (lines)")
+            .help("the CPU's algorithm: dda or bresenham for the lines; scanline fills the "
+                  "triangles span by span (mesh, shading), the others by edge functions")
             .key('A'),
         fw::Param::boolean(kReverse, false)
             .help("draw each segment from its end to its start (lines)")
@@ -137,9 +138,10 @@ CpuScene cpu_scene(const fw::ParamValues& p) {
             const std::vector<WindowVertex> vs =
                 shading ? shading_triangles() : mesh_triangles(p[kWinding]);
             const bool perspective = p[kInterpolation] == Interpolation::Perspective;
+            const auto fill =
+                p[kAlgorithm] == Algorithm::Scanline ? &fill_triangle_scanline : &fill_triangle;
             for (size_t i = 0; i + 2 < vs.size(); i += 3) {
-                fill_triangle(out.canvas, &vs[i], !shading || perspective,
-                              shading && p[kDepthTest]);
+                fill(out.canvas, &vs[i], !shading || perspective, shading && p[kDepthTest]);
                 ++out.triangles;
             }
             break;

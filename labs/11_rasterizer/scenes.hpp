@@ -24,9 +24,13 @@ constexpr fw::Choice<Scene> kScenes[] = {{Scene::Lines, "lines"},
 enum class View { Split, Cpu, Gl, Difference };
 constexpr fw::Choice<View> kViews[] = {
     {View::Split, "split"}, {View::Cpu, "cpu"}, {View::Gl, "gl"}, {View::Difference, "difference"}};
-enum class Algorithm { Dda, Bresenham };
+// dda and bresenham draw the lines (and fill the triangles by edge
+// functions); scanline fills the triangles span by span (and draws the lines
+// by Bresenham).
+enum class Algorithm { Dda, Bresenham, Scanline };
 constexpr fw::Choice<Algorithm> kAlgorithms[] = {{Algorithm::Dda, "dda"},
-                                                 {Algorithm::Bresenham, "bresenham"}};
+                                                 {Algorithm::Bresenham, "bresenham"},
+                                                 {Algorithm::Scanline, "scanline"}};
 enum class Winding { Ccw, Cw };
 constexpr fw::Choice<Winding> kWindings[] = {{Winding::Ccw, "ccw"}, {Winding::Cw, "cw"}};
 enum class Interpolation { Perspective, Affine };

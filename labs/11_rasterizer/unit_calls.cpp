@@ -47,6 +47,18 @@ std::vector<glm::vec2> covers_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
     return out;
 }
 
+std::vector<glm::vec3> scanline_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+    Canvas canvas(8, 8);
+    const WindowVertex v[3] = {{glm::vec3(a, 0.5f), 1.0f, glm::vec3(1.0f)},
+                               {glm::vec3(b, 0.5f), 1.0f, glm::vec3(1.0f)},
+                               {glm::vec3(c, 0.5f), 1.0f, glm::vec3(1.0f)}};
+    fill_triangle_scanline(canvas, v, true, false);
+    std::vector<glm::vec3> out;
+    for (const glm::vec3& pixel : written(canvas))
+        out.push_back(pixel + glm::vec3(0.5f, 0.5f, 0.0f));
+    return out;
+}
+
 glm::vec4 interpolate_at(glm::vec3 c0, glm::vec3 c1, glm::vec3 c2, glm::vec3 z, glm::vec3 w,
                          glm::vec3 weights, bool perspective) {
     const WindowVertex v[3] = {{{0.0f, 0.0f, z[0]}, w[0], c0},

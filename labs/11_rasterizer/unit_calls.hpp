@@ -22,6 +22,11 @@ glm::vec2 top_left_both(glm::vec2 a, glm::vec2 b);
 // the triangle a b c, row by row from the bottom.
 std::vector<glm::vec2> covers_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c);
 
+// fill_triangle_scanline() of the triangle a b c on an empty 8 x 8 canvas:
+// every pixel written, row by row from the bottom, as (centre x, centre y,
+// how many times it was written).
+std::vector<glm::vec3> scanline_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c);
+
 // interpolate() for corners of colours c0, c1, c2, window depths z and clip
 // w, at the weights `weights` divided by their sum: (r, g, b, depth).
 glm::vec4 interpolate_at(glm::vec3 c0, glm::vec3 c1, glm::vec3 c2, glm::vec3 z, glm::vec3 w,

@@ -1017,7 +1017,19 @@ constexpr const char* kMistakesJson = R"json(
    "file": "labs/11_rasterizer/clip.cpp",
    "find": "const glm::vec3 ndc = glm::vec3(v.clip) / v.clip.w;",
    "replace": "const glm::vec3 ndc = glm::vec3(v.clip);",
-   "why": "maps clip coordinates to the window without dividing by w, which is right only where w is 1"}
+   "why": "maps clip coordinates to the window without dividing by w, which is right only where w is 1"},
+  {"id": "rasterizer-scanline-right-edge-inclusive",
+   "lab": "11_rasterizer",
+   "file": "labs/11_rasterizer/scanline.cpp",
+   "find": "const int x1 = static_cast<int>(std::ceil(right - 0.5f));",
+   "replace": "const int x1 = static_cast<int>(std::floor(right - 0.5f)) + 1;",
+   "why": "keeps the centres on the right edge in the span as well as those on the left one, so a centre on an edge shared by two triangles is filled by both"},
+  {"id": "rasterizer-scanline-span-from-corners",
+   "lab": "11_rasterizer",
+   "file": "labs/11_rasterizer/scanline.cpp",
+   "find": "        const int x0 = static_cast<int>(std::ceil(left - 0.5f));\n        const int x1 = static_cast<int>(std::ceil(right - 0.5f));",
+   "replace": "        const int x0 = static_cast<int>(std::ceil(left));\n        const int x1 = static_cast<int>(std::ceil(right));",
+   "why": "tests the span against the pixels' left corners x instead of their centres x + 0.5, shifting every span half a pixel"}
 ]}
 )json";
 // END SOLUTION

@@ -91,6 +91,13 @@ std::vector<glm::vec2> ref_covers_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c)
     return out;
 }
 
+// The scanline fill writes the covered centres once each.
+std::vector<glm::vec3> ref_scanline_centres(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+    std::vector<glm::vec3> out;
+    for (const glm::vec2 centre : ref_covers_centres(a, b, c)) out.emplace_back(centre, 1.0f);
+    return out;
+}
+
 // Areas of the triangles p makes with each opposite edge, over the whole.
 glm::vec3 ref_barycentric(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 p) {
     const double area = cross(a, b, c);
@@ -148,6 +155,8 @@ COURSE_REFERENCE(line_bresenham, &ref_line_bresenham,
                   grading::integer(0, 31)})
 COURSE_REFERENCE(top_left, &ref_top_left_both, {grading::vec(2, -4, 4), grading::vec(2, -4, 4)})
 COURSE_REFERENCE(covers, &ref_covers_centres,
+                 {grading::vec(2, 0, 8), grading::vec(2, 0, 8), grading::vec(2, 0, 8)})
+COURSE_REFERENCE(fill_triangle_scanline, &ref_scanline_centres,
                  {grading::vec(2, 0, 8), grading::vec(2, 0, 8), grading::vec(2, 0, 8)})
 COURSE_REFERENCE(barycentric, &ref_barycentric,
                  {grading::vec(2, 0, 32), grading::vec(2, 0, 32), grading::vec(2, 0, 32),

@@ -93,6 +93,35 @@ TEST_CASE("rasterizer: a quad as two triangles fills each covered pixel centre o
     CHECK(c.color[static_cast<size_t>(c.index(2, 1))] == glm::vec3(0, 1, 0));
 }
 
+TEST_CASE("rasterizer: the scanline fill writes what the edge-function fill writes") {
+    // Edges through pixel centres (the square (0.5, 0.5)-(4.5, 4.5) cut along
+    // its diagonal, both windings), then triangles from a fixed sequence of
+    // numbers, partly off the canvas, with depth and perspective-correct colour.
+    std::vector<glm::vec2> corners = {{0.5f, 0.5f}, {4.5f, 0.5f}, {4.5f, 4.5f}, {0.5f, 0.5f},
+                                      {4.5f, 4.5f}, {0.5f, 4.5f}, {0.5f, 0.5f}, {4.5f, 4.5f},
+                                      {4.5f, 0.5f}, {3.5f, 3.5f}, {0.5f, 3.5f}, {0.5f, 0.5f}};
+    unsigned state = 12345u;
+    const auto next = [&state] {
+        state = state * 1103515245u + 12345u;
+        return static_cast<float>((state >> 8) % 12000u) / 1000.0f - 2.0f;
+    };
+    for (int i = 0; i < 600; ++i) corners.emplace_back(next(), next());
+    Canvas edge(8, 8), scan(8, 8);
+    for (size_t t = 0; t + 2 < corners.size(); t += 3) {
+        rasterizer::WindowVertex v[3];
+        for (int i = 0; i < 3; ++i)
+            v[i] = {{corners[t + i], 0.1f * static_cast<float>(i + t % 7)},
+                    1.0f + static_cast<float>(i),
+                    glm::vec3(i == 0, i == 1, i == 2)};
+        rasterizer::fill_triangle(edge, v, true, true);
+        rasterizer::fill_triangle_scanline(scan, v, true, true);
+        INFO("triangle " << t / 3);
+        REQUIRE(scan.writes == edge.writes);
+        REQUIRE(scan.color == edge.color);
+        REQUIRE(scan.depth == edge.depth);
+    }
+}
+
 TEST_CASE("rasterizer: perspective-correct colour and the near-plane clip") {
     const rasterizer::WindowVertex v[3] = {{{0, 0, 0.2f}, 1.0f, glm::vec3(1, 0, 0)},
                                            {{4, 0, 0.6f}, 3.0f, glm::vec3(0, 1, 0)},
