@@ -9,9 +9,10 @@
 // Lecture: rasterization (DDA, Bresenham, scanline), parameter interpolation
 // with barycentric coordinates, clip space, the perspective divide and the
 // viewport-to-window mapping.
-// GL: glDrawArrays with GL_LINES and GL_TRIANGLES, glBlendFunc(GL_ONE,
-// GL_ONE) to count fragments, glDepthFunc(GL_LESS), smooth and noperspective
-// outputs, glTexSubImage2D (the CPU image), GL_NEAREST magnification.
+// GL: glBindVertexArray and glDrawArrays with GL_LINES and GL_TRIANGLES,
+// glBlendFunc(GL_ONE, GL_ONE) to count fragments, glDepthFunc(GL_LESS),
+// smooth and noperspective outputs; the framework's texture takes the CPU
+// image (GL_NEAREST magnification).
 // Student parts (marked TODO): line_dda(), line_bresenham(), covers() (with
 // top_left()), barycentric(), interpolate() and depth_test() in raster.cpp,
 // clip_near() and to_window() in clip.cpp, fill_triangle_scanline() in
