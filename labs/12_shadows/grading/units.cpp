@@ -16,7 +16,8 @@ glm::mat4 ref_shadow_matrix(glm::vec4 light) {
     glm::mat4 m(0.0f);
     for (int column = 0; column < 4; ++column)
         for (int row = 0; row < 4; ++row)
-            m[column][row] = static_cast<float>((row == column ? dot : 0.0) - light[row] * plane[column]);
+            m[column][row] =
+                static_cast<float>((row == column ? dot : 0.0) - light[row] * plane[column]);
     return m;
 }
 
