@@ -178,8 +178,8 @@ private:
     void draw_fog(const fw::ParamValues& p) {
         use(*fog_, glm::mat4(1.0f), fog_projection());
         fog_->set(kColorUniform, kSurfaceColor);
-        fog_->set(kFogColorUniform, kFogColor);
         // Unused, and dropped, until the student's fog is written.
+        fog_->set_if_active(kFogColorUniform, kFogColor);
         fog_->set_if_active(kFogModeUniform, static_cast<int>(p[kFog]));
         fog_->set_if_active(kFogStartUniform, kFogStart);
         fog_->set_if_active(kFogEndUniform, kFogEnd);
