@@ -7,6 +7,7 @@
 
 #include "framework/error.hpp"
 #include "framework/gl/record.hpp"
+#include "grading/judge/record_match.hpp"
 #include "grading/judge/state_words.hpp"
 
 namespace grading {
@@ -174,6 +175,21 @@ std::string enabled_sentence(const json& student, const json& reference, std::st
     return "";
 }
 
+// A part of the reference's state that the student's draw does not read:
+// GL reads it only where other state asks for it. A texture's compare
+// function is recorded only where its compare mode is on, so its absence
+// is that mode left at GL_NONE.
+std::string absent_sentence(const std::string& where, const std::string& gl,
+                            const std::vector<std::string>& path) {
+    const std::string func = "GL_TEXTURE_COMPARE_FUNC";
+    if (path.size() == 3 && path[0] == "textures" && path[2] == "compare_func" &&
+        gl.rfind(func, 0) == 0)
+        return where + "GL_TEXTURE_COMPARE_MODE" + gl.substr(func.size()) +
+               " is GL_NONE, so the texture is read without a comparison";
+    return where + gl + " takes no part in this draw (GL reads it only where other state " +
+           "asks for it)";
+}
+
 std::string with_words(std::string sentence, const std::string& words) {
     return sentence + (words.empty() ? "" : "; " + words) + ".";
 }
@@ -253,8 +269,12 @@ void write_reference_record(const LabData& lab, const std::string& checkpoint,
 
 std::string state_difference(const json& student, const json& reference, const fw::Checkpoint& cp,
                              const json& words, bool visible) {
-    const json& s = student.at("events");
-    const json& r = reference.at("events");
+    // Two drivers may keep different parts of a program active: compare
+    // what both keep (record_match.hpp).
+    json narrowed_student = student, narrowed_reference = reference;
+    keep_common_interface(narrowed_student, narrowed_reference);
+    const json& s = narrowed_student.at("events");
+    const json& r = narrowed_reference.at("events");
     if (s == r) return "";
     const std::string scene = scene_of(cp);
     const std::string order = order_sentence(s, r, scene, words, cp);
@@ -279,7 +299,7 @@ std::string state_difference(const json& student, const json& reference, const f
         const json* mine = at_path(s[i], path);
         const json* theirs = at_path(r[i], path);
         std::string sentence = where + gl + " is " + value_text(mine);
-        if (!mine) sentence = where + gl + " is not live here (nothing sets or reads it)";
+        if (!mine) sentence = absent_sentence(where, gl, path);
         // A visible checkpoint's report shows the student's value and the
         // sheet's words, never the solution's own value (docs/contract.md).
         if (!visible) sentence += "; the reference's is " + value_text(theirs);

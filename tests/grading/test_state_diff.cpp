@@ -99,6 +99,14 @@ TEST_CASE(
          [] { glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST); },
          "Draw 1 of scene `x`: GL_TEXTURE_MIN_FILTER (glTexParameteri) of the texture on unit 0 "
          "is GL_NEAREST."},
+        {"compare mode left off",
+         [] {
+             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+         },
+         [] { glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL); },
+         "Draw 1 of scene `x`: GL_TEXTURE_COMPARE_MODE (glTexParameteri) of the texture on unit 0 "
+         "is GL_NONE, so the texture is read without a comparison."},
         {"clip distance not enabled", [] { glEnable(GL_CLIP_DISTANCE0); }, [] {},
          "Draw 1 of scene `x`: GL_CLIP_DISTANCE0 is not enabled (glEnable)."}};
     for (const Planted& p : planted) {
@@ -170,6 +178,66 @@ TEST_CASE("state diff: the same draws in another order are a sort's mistake") {
     });
     CHECK(diff(other, reference, checkpoint({{"scene", "sorting"}})).find("another order") ==
           std::string::npos);
+}
+
+// What another driver would record for the same draws: the scene's program
+// with the attribute and the uniform that Mesa drops kept active (a linker
+// may keep either; Mesa 25 keeps an attribute that feeds an unused output,
+// Mesa 22 drops it), and an array uniform whose last element it drops.
+namespace {
+json kept_active(json record, const json& weights) {
+    for (json& event : record["events"]) {
+        if (!event.contains("program")) continue;
+        event["vertex_array"]["attributes"]["1"] = {
+            {"name", "a_unused"}, {"enabled", false}, {"current", {0, 0, 0, 1}}};
+        event["uniforms"]["u_unused"] = 0;
+        event["uniforms"]["u_weights"] = weights;
+    }
+    return record;
+}
+}  // namespace
+
+TEST_CASE("state diff: what one driver keeps active and another drops is never a difference") {
+    Scene scene;
+    const auto blended = [&](GLenum dst) {
+        return scene.record([&, dst] {
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, dst);
+            scene.draw();
+            scene.draw();
+        });
+    };
+    const json four = {0.1, 0.2, 0.3, 0.4}, three = {0.1, 0.2, 0.3};
+    const json reference = kept_active(blended(GL_ONE_MINUS_SRC_ALPHA), three);
+    const json params = {{"scene", "blend"}, {"mode", "over"}};
+    // The solution on the other driver: nothing to name.
+    CHECK(diff(blended(GL_ONE_MINUS_SRC_ALPHA), reference, checkpoint(params)).empty());
+    CHECK(diff(kept_active(blended(GL_ONE_MINUS_SRC_ALPHA), four), reference, checkpoint(params))
+              .empty());
+    // A mistake is named as on one driver, not as the attribute the other keeps.
+    CHECK(diff(blended(GL_DST_ALPHA), reference, checkpoint(params)) ==
+          "Draw 1 of scene `blend`: glBlendFunc's destination factor is GL_DST_ALPHA; the "
+          "sheet's over weights what is behind by 1 - alpha.");
+    // An element both keep still counts.
+    CHECK(diff(kept_active(blended(GL_ONE_MINUS_SRC_ALPHA), json{0.1, 0.2, 0.9, 0.4}), reference,
+               checkpoint(params))
+              .find("u_weights") != std::string::npos);
+}
+
+TEST_CASE("state diff: another order is named across drivers") {
+    Scene scene;
+    const glm::vec4 colours[] = {{1, 0, 0, 0.5f}, {0, 1, 0, 0.5f}};
+    const auto in_order = [&](std::vector<int> order) {
+        return scene.record([&] {
+            for (int i : order) {
+                scene.program.set("u_color", colours[i]);
+                scene.draw();
+            }
+        });
+    };
+    const json reference = kept_active(in_order({1, 0}), json{1.0, 2.0});
+    CHECK(diff(in_order({0, 1}), reference, checkpoint({{"scene", "sorting"}}))
+              .find("the draws come in another order") != std::string::npos);
 }
 
 // The staff's files the state diff reads are checked before any grading: a
