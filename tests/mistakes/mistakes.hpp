@@ -1073,7 +1073,7 @@ constexpr const char* kMistakesJson = R"json(
    "find": "    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);\n",
    "replace": "",
    "why": "sets the compare function and thinks a sampler2DShadow compares by itself, leaving GL_TEXTURE_COMPARE_MODE at GL_NONE",
-   "state": "GL_TEXTURE_COMPARE_FUNC (glTexParameteri) of the texture on unit 0 is not live here"},
+   "state": "GL_TEXTURE_COMPARE_MODE (glTexParameteri) of the texture on unit 0 is GL_NONE"},
   {"id": "shadows-compare-greater",
    "lab": "12_shadows",
    "file": "labs/12_shadows/shadow_state.cpp",
