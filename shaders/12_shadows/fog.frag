@@ -23,7 +23,6 @@ void main() {
     // BEGIN SOLUTION
     // STUDENT: // TODO: f for u_fog_mode (the sheet's table): linear (end - d) / (end - start),
     // STUDENT: // exp exp(-density d), exp2 exp(-(density d)^2), clamped to [0, 1]
-    // STUDENT: (void)d;
     if (u_fog_mode == FOG_LINEAR) f = (u_fog_end - d) / (u_fog_end - u_fog_start);
     if (u_fog_mode == FOG_EXP) f = exp(-u_fog_density * d);
     if (u_fog_mode == FOG_EXP2) f = exp(-(u_fog_density * d) * (u_fog_density * d));
