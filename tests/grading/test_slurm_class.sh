@@ -3,10 +3,11 @@
 # slurmctld and slurmd with munge, started here for the test and stopped at its
 # end, run a job array of three slices of a small class; `course merge-class`
 # puts them together, and the gradebook must be byte-identical to one run's.
-# Exits 77 (SKIP, with the reason) where the cluster cannot run: not root, or
-# slurmctld, slurmd, munged or sbatch missing (LAB_SETUP_TESTS=1
-# scripts/setup.sh installs them). tests/grading/test_grade_class.cpp runs
-# three slices as parallel processes wherever this cannot.
+# Exits 77 (SKIP, with the reason) where the cluster cannot run: not root, no
+# cgroup filesystem, or slurmctld, slurmd, munged or sbatch missing
+# (LAB_SETUP_TESTS=1 scripts/setup.sh installs them).
+# tests/grading/test_grade_class.cpp runs three slices as parallel processes
+# wherever this cannot.
 #
 #   tests/grading/test_slurm_class.sh BIN_DIR SOURCE_DIR OUT_DIR
 set -uo pipefail
@@ -18,6 +19,9 @@ for exe in slurmctld slurmd munged sbatch squeue scontrol; do
     skip "$exe is missing (Debian's slurmctld, slurmd, slurm-client and munge packages)"
 done
 export PATH=$PATH:/usr/sbin
+# slurmd initialises its cgroup plugin at start, whatever ProctrackType says.
+mountpoint -q /sys/fs/cgroup ||
+  skip "no cgroup filesystem at /sys/fs/cgroup (a chroot or container without one): slurmd cannot start"
 
 rm -rf "$out" && mkdir -p "$out"
 cluster=$out/cluster
