@@ -43,14 +43,20 @@ json float_value(double v) {
     return out;
 }
 
-json random_number(double lo, double hi, std::mt19937& rng) {
-    return float_value(std::uniform_real_distribution<double>(lo, hi)(rng));
+// Uniform in [lo, hi]; with a step, uniform over its multiples there.
+json random_number(const ArgDomain& d, std::mt19937& rng) {
+    if (d.step > 0.0) {
+        const auto first = static_cast<long>(std::ceil(d.lo / d.step));
+        const auto last = static_cast<long>(std::floor(d.hi / d.step));
+        return float_value(double(std::uniform_int_distribution<long>(first, last)(rng)) * d.step);
+    }
+    return float_value(std::uniform_real_distribution<double>(d.lo, d.hi)(rng));
 }
 
 json random_value(const ArgDomain& d, std::mt19937& rng) {
     switch (d.kind) {
         case ArgDomain::Kind::Scalar:
-            return random_number(d.lo, d.hi, rng);
+            return random_number(d, rng);
         case ArgDomain::Kind::Integer:
             return std::uniform_int_distribution<int>(static_cast<int>(d.lo),
                                                       static_cast<int>(d.hi))(rng);
@@ -61,7 +67,7 @@ json random_value(const ArgDomain& d, std::mt19937& rng) {
             return d.names[std::uniform_int_distribution<size_t>(0, d.names.size() - 1)(rng)];
         case ArgDomain::Kind::Vector: {
             json v = json::array();
-            for (int i = 0; i < d.size; ++i) v.push_back(random_number(d.lo, d.hi, rng));
+            for (int i = 0; i < d.size; ++i) v.push_back(random_number(d, rng));
             return v;
         }
         case ArgDomain::Kind::UnitVector: {
@@ -165,6 +171,13 @@ bool register_reference(std::string_view lab_dir, ReferenceUnit unit) {
                             a.function.name +
                             " alternative whose arguments or result differ from the reference's");
     }
+    for (const ArgDomain& d : unit.domains)
+        if (d.step > 0.0 && std::ceil(d.lo / d.step) > std::floor(d.hi / d.step))
+            throw fw::Error("reference '" + unit.lab + "." + unit.function.name +
+                            "' has a domain on a grid with no point between its bounds");
+    if (unit.redraw && unit.redraw->arity != unit.function.arity)
+        throw fw::Error("reference '" + unit.lab + "." + unit.function.name +
+                        "': its redraw_when() test takes other arguments than the function");
     if (!unit.element_names.empty() && !unit.shape.list)
         throw fw::Error("reference '" + unit.lab + "." + unit.function.name +
                         "' names the elements of a result that is not a list");
@@ -193,9 +206,14 @@ const ReferenceUnit& find_reference(std::string_view lab, std::string_view funct
 }
 
 json random_arguments(const ReferenceUnit& unit, std::mt19937& rng) {
-    json args = json::array();
-    for (const ArgDomain& d : unit.domains) args.push_back(random_value(d, rng));
-    return args;
+    for (int tries = 0; tries < 1000; ++tries) {
+        json args = json::array();
+        for (const ArgDomain& d : unit.domains) args.push_back(random_value(d, rng));
+        if (!unit.redraw || !unit.redraw->call(args).get<bool>()) return args;
+    }
+    throw fw::Error("reference '" + unit.lab + "." + unit.function.name +
+                    "': 1000 argument lists in a row were drawn again (its redraw_when() test "
+                    "holds for nearly all of its domains)");
 }
 
 bool results_match(const json& expected, const json& observed, double tolerance, std::string* why) {

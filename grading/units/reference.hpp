@@ -37,7 +37,15 @@
 //   - grading::element_names({"a", "b", ...}): names for the elements of a
 //     std::vector result, for the report (an aggregate's fields are named
 //     by the lab's fw::FieldsOf, units.hpp);
-//   - a number: the tolerance (default 1e-4; a check may set its own).
+//   - a number: the tolerance (default 1e-4; a check may set its own);
+//   - grading::redraw_when(&fn): fn(arguments) true means a drawn argument
+//     list is drawn again (a degenerate triangle the function is not defined
+//     for).
+// A domain may be put on a grid, grading::on_grid(grading::vec(2, 0, 8),
+// 1.0 / 16): every drawn number is then a multiple of the step, as GL snaps
+// window coordinates to its sub-pixel grid. A decision the reference makes
+// exactly (a pixel centre on an edge or not) then cannot turn on the last
+// bit of a float computation that is right.
 // These alternatives are course's code like the reference, never the lab's.
 #pragma once
 
@@ -62,6 +70,7 @@ struct ArgDomain {
     double lo = -1.0, hi = 1.0;
     bool degrees = false;            // a scalar that is an angle in degrees
     std::vector<std::string> names;  // a choice's names (an enum argument)
+    double step = 0.0;               // > 0: every number drawn is a multiple of it
 };
 inline ArgDomain domain(ArgDomain::Kind kind, int size, double lo, double hi,
                         bool degrees = false) {
@@ -84,6 +93,11 @@ inline ArgDomain vec(int n, double lo, double hi) {
     return domain(ArgDomain::Kind::Vector, n, lo, hi);
 }
 inline ArgDomain unit_vec(int n) { return domain(ArgDomain::Kind::UnitVector, n, -1.0, 1.0); }
+// `d` with its numbers drawn from the multiples of `step` in [lo, hi].
+inline ArgDomain on_grid(ArgDomain d, double step) {
+    d.step = step;
+    return d;
+}
 inline ArgDomain boolean() { return domain(ArgDomain::Kind::Bool, 1, 0.0, 1.0); }
 // Any of the names an enum argument is bound to (fw::ChoicesOf, names.hpp).
 template <class E>
@@ -194,6 +208,16 @@ struct OffByOneWords {
 };
 inline OffByOneWords off_by_one(std::string words) { return {std::move(words)}; }
 
+// Arguments the function is not defined for: a draw for which `test` returns
+// true is drawn again.
+struct RedrawWhen {
+    fw::UnitFunction test;
+};
+template <class... A>
+RedrawWhen redraw_when(bool (*test)(A...)) {
+    return {fw::unit_function("redraw when", test)};
+}
+
 struct ReferenceUnit {
     std::string lab;                         // lab id, e.g. "transforms"
     fw::UnitFunction function;               // name + JSON call, as in the lab
@@ -206,6 +230,8 @@ struct ReferenceUnit {
     // Where a result 1 off names Mistake::OffByOne: the function's words for
     // it (grading::off_by_one); empty: it names nothing.
     std::string off_by_one;
+    // Where set, a drawn argument list it returns true for is drawn again.
+    std::optional<fw::UnitFunction> redraw;
     // Built from a lab's recorded cases.json (recorded.hpp), not compiled:
     // it knows only the argument lists recorded there.
     bool recorded = false;
@@ -232,6 +258,9 @@ inline void add_to_reference(ReferenceUnit& unit, ElementNames names) {
 }
 inline void add_to_reference(ReferenceUnit& unit, OffByOneWords words) {
     unit.off_by_one = std::move(words.words);
+}
+inline void add_to_reference(ReferenceUnit& unit, RedrawWhen redraw) {
+    unit.redraw = std::move(redraw.test);
 }
 
 // The reference `fn` under `name`, with its domains and the optional extras
@@ -261,7 +290,9 @@ bool register_reference(std::string_view lab_dir, ReferenceUnit unit);
 // temporary arguments cannot look like what the result points into.
 const ReferenceUnit& find_reference(std::string_view lab, std::string_view function);
 
-// One random argument list for `unit` (a JSON array, one element per argument).
+// One random argument list for `unit` (a JSON array, one element per
+// argument), drawn again while unit.redraw holds; throws fw::Error when 1000
+// draws in a row do.
 nlohmann::json random_arguments(const ReferenceUnit& unit, std::mt19937& rng);
 
 // What a value that is not finite usually means, in words: "a division by a

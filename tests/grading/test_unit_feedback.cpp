@@ -164,6 +164,7 @@ json arm_with_reversed_j(const json& a, const json& expected) {
 }
 
 glm::vec3 unit_direction(glm::vec3 v) { return glm::normalize(v); }
+bool any_direction(glm::vec3) { return true; }
 
 enum class Side { Left, Right };
 constexpr fw::Choice<Side> kSides[] = {{Side::Left, "left"}, {Side::Right, "right"}};
@@ -691,6 +692,40 @@ TEST_CASE("a reference's extras are checked when it registers") {
     for (int i = 0; i < 200; ++i)
         drawn.insert(grading::random_arguments(reference("transforms", "compose"), rng)[5]);
     CHECK(drawn == std::set<std::string>{"trs", "tsr", "rts", "rst", "str", "srt"});
+}
+
+TEST_CASE("a domain on a grid draws its multiples only; a redraw_when() draw is drawn again") {
+    // Lab 11's triangles: corners on the 1/16-pixel grid, none degenerate.
+    const ReferenceUnit& bary = reference("rasterizer", "barycentric");
+    std::mt19937 rng(11);
+    std::set<double> xs;
+    for (int i = 0; i < 2000; ++i) {
+        const json args = grading::random_arguments(bary, rng);
+        for (const json& corner : args)
+            for (const json& v : corner) {
+                const double x = v.get<double>();
+                CHECK((x >= 0.0 && x <= 32.0 && x * 16.0 == std::floor(x * 16.0)));
+                xs.insert(x);
+            }
+        const glm::dvec2 a = fw::from_json_value<glm::vec2>(args[0]),
+                         b = fw::from_json_value<glm::vec2>(args[1]),
+                         c = fw::from_json_value<glm::vec2>(args[2]);
+        CHECK((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) != 0.0);
+    }
+    CHECK(xs.size() > 400);  // of the 513 multiples in [0, 32]
+    // A grid between whose bounds no multiple lies, and a test that always
+    // holds, are refused.
+    ReferenceUnit empty = grading::make_reference(
+        "direction", &unit_direction, {grading::on_grid(grading::vec(3, 0.1, 0.2), 1.0)});
+    CHECK_THROWS_WITH_AS(grading::register_reference("98_extras", std::move(empty)),
+                         doctest::Contains("on a grid with no point between its bounds"),
+                         fw::Error);
+    ReferenceUnit always =
+        grading::make_reference("direction", &unit_direction, {grading::vec(3, -1, 1)},
+                                grading::redraw_when(&any_direction));
+    CHECK_THROWS_WITH_AS(grading::random_arguments(always, rng),
+                         doctest::Contains("1000 argument lists in a row were drawn again"),
+                         fw::Error);
 }
 
 TEST_CASE("an aggregate result is a list whose elements the report names by field") {

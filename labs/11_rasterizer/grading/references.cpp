@@ -119,6 +119,17 @@ glm::vec4 ref_interpolate(glm::vec3 c0, glm::vec3 c1, glm::vec3 c2, glm::vec3 z,
     return glm::vec4(glm::vec3(sum / norm), float(depth));
 }
 
+// No area: the weights are not defined.
+bool degenerate(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2) { return cross(a, b, c) == 0.0; }
+
+// Window positions in [0, size]^2 on a 1/16-pixel grid, as GL snaps them
+// (GL_SUBPIXEL_BITS is at least 4). On it a float edge function is exact, and
+// a row's crossing by the sheet's formula lands on the right side of every
+// pixel centre, so the exact reference and a right float answer agree.
+grading::ArgDomain on_subpixels(double size) {
+    return grading::on_grid(grading::vec(2, 0, size), 1.0 / 16.0);
+}
+
 // GL_LESS: nearer passes and is stored.
 glm::vec2 ref_depth_test(float stored, float z) {
     return z < stored ? glm::vec2(1.0f, z) : glm::vec2(0.0f, stored);
@@ -154,14 +165,12 @@ COURSE_REFERENCE(line_bresenham, &ref_line_bresenham,
                  {grading::integer(0, 31), grading::integer(0, 31), grading::integer(0, 31),
                   grading::integer(0, 31)})
 COURSE_REFERENCE(top_left, &ref_top_left_both, {grading::vec(2, -4, 4), grading::vec(2, -4, 4)})
-COURSE_REFERENCE(covers, &ref_covers_centres,
-                 {grading::vec(2, 0, 8), grading::vec(2, 0, 8), grading::vec(2, 0, 8)})
+COURSE_REFERENCE(covers, &ref_covers_centres, {on_subpixels(8), on_subpixels(8), on_subpixels(8)})
 COURSE_REFERENCE(fill_triangle_scanline, &ref_scanline_centres,
-                 {grading::vec(2, 0, 8), grading::vec(2, 0, 8), grading::vec(2, 0, 8)})
+                 {on_subpixels(8), on_subpixels(8), on_subpixels(8)})
 COURSE_REFERENCE(barycentric, &ref_barycentric,
-                 {grading::vec(2, 0, 32), grading::vec(2, 0, 32), grading::vec(2, 0, 32),
-                  grading::vec(2, 0, 32)},
-                 1e-3)
+                 {on_subpixels(32), on_subpixels(32), on_subpixels(32), on_subpixels(32)}, 1e-3,
+                 grading::redraw_when(&degenerate))
 COURSE_REFERENCE(interpolate, &ref_interpolate,
                  {grading::vec(3, 0, 1), grading::vec(3, 0, 1), grading::vec(3, 0, 1),
                   grading::vec(3, 0, 1), grading::vec(3, 0.1, 10), grading::vec(3, 0.05, 1),
