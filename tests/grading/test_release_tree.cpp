@@ -35,6 +35,7 @@ namespace fs = std::filesystem;
 using fw::shell_quote;
 using fw::test::read_text;
 using fw::test::write_text;
+using nlohmann::json;
 using namespace tree_test;
 
 namespace {
@@ -349,6 +350,37 @@ double visible_score(const Grade& g) {
     return sum;
 }
 
+// The checkpoints of `lab_dir` that list the part placed at the function
+// holding block `b` (checkpoints.json's "parts"), yet score full marks in `g`,
+// the grade of that block alone in its student version: where its function
+// still has its starting code, the grader would tell a student that such a
+// checkpoint needs it, which is false there.
+std::vector<std::string> listed_but_passing(const fs::path& source, const std::string& lab_dir,
+                                            const Block& b, const Grade& g) {
+    const fw::CheckpointFile file =
+        fw::read_checkpoint_file((source / "labs" / lab_dir / "checkpoints.json").string());
+    const std::string function = enclosing_function(read_text(source / b.file), b.line);
+    std::set<int> parts;
+    for (const json& p : file.parts)
+        if (p.value("file", "") == b.file && p.value("function", "") == function)
+            parts.insert(p.value("part", 0));
+    std::vector<std::string> out;
+    for (const fw::Checkpoint& cp : file.checkpoints) {
+        const bool lists = std::any_of(cp.parts.begin(), cp.parts.end(),
+                                       [&](int n) { return parts.count(n) > 0; });
+        // Its entries: "LAB / CHECKPOINT", or one "LAB / CHECKPOINT / CHECK" a check.
+        const std::string name = file.lab + " / " + cp.name;
+        size_t graded = 0, failed = 0;
+        for (const auto& [entry, e] : g.entries)
+            if (entry == name || entry.rfind(name + " / ", 0) == 0) {
+                ++graded;
+                failed += g.failed.count(entry);
+            }
+        if (lists && graded > 0 && failed == 0) out.push_back(cp.name);
+    }
+    return out;
+}
+
 }  // namespace
 
 TEST_CASE("release: every solution block is graded" * doctest::skip()) {
@@ -427,6 +459,9 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
                          std::to_string(caught) + " in all)";
             for (const auto& [id, status] : g.status)
                 if (status != "ok") result += " [" + id + ": " + status + "]";
+            if (!lab_dir.empty())
+                for (const std::string& cp : listed_but_passing(source, lab_dir, b, g))
+                    result += " [LISTS ITS PART, YET PASSES: " + cp + "]";
         }
         write_text(target, original);
         return result;
@@ -448,6 +483,10 @@ TEST_CASE("release: every solution block is graded" * doctest::skip()) {
         report += line;
         const bool graded = result.find("visible checks fail") != std::string::npos;
         CHECK_MESSAGE(graded, where << ": " << result);
+        CHECK_MESSAGE(result.find("LISTS ITS PART") == std::string::npos,
+                      where << ": " << result
+                            << " (a checkpoint lists a part only where each of its functions, "
+                               "alone at its starting code, makes it fail)");
         all_graded = all_graded && graded;
     }
     MESSAGE("solution blocks, each alone in its student version:\n"
