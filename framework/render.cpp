@@ -119,6 +119,12 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
     RenderOutput out;
     out.stats = draw(params, width, height, time).stats;
     out.color = framebuffer_->read_color();
+    read_back(params, width, height, time, read, out);
+    return out;
+}
+
+void LabRenderer::read_back(const ParamValues& params, int width, int height, double time,
+                            ReadBack read, RenderOutput& out) {
     if (read.depth) out.depth = framebuffer_->read_depth();
     if (read.buffers) {
         // Read back with glGetBufferSubData, which sees what shaders wrote
@@ -129,7 +135,6 @@ RenderOutput LabRenderer::render(const ParamValues& params, int width, int heigh
         check_lab_buffers(out.buffers, registered_.info.id);
     }
     check_gl(("read-back of lab " + registered_.info.id).c_str());
-    return out;
 }
 
 void parse_size(const std::string& text, int& width, int& height) {

@@ -65,6 +65,11 @@ public:
     // (what it leaves out stays empty in the output).
     RenderOutput render(const ParamValues& params, int width, int height, double time = 0.0,
                         ReadBack read = {});
+    // What `read` asks for of the frame render() last drew with these
+    // arguments, into `out`: render() with it, read apart (the grader keeps
+    // its own reads out of the record of the lab's draws).
+    void read_back(const ParamValues& params, int width, int height, double time, ReadBack read,
+                   RenderOutput& out);
     // What the last draw() drew into; null before the first.
     const Framebuffer* framebuffer() const { return framebuffer_.get(); }
 

@@ -91,14 +91,18 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     // "record": what each draw was told (framework/gl/record.hpp).
     const bool record = recorder && job.value("record", false);
     if (record) recorder->begin();
+    const int width = job.value("width", 512), height = job.value("height", 512);
     RenderOutput out;
     try {
-        out = renderer.render(params, job.value("width", 512), job.value("height", 512), 0.0, read);
+        // The lab's draws and the frame's colour, as `course bless` records
+        // them; the grader's own reads (depth, buffers) after the record.
+        out = renderer.render(params, width, height, 0.0, ReadBack{false, false});
     } catch (...) {
         if (record) recorder->end();
         throw;
     }
     if (record) put_output(base + ".record.json", gl_record::record_text(recorder->end()));
+    renderer.read_back(params, width, height, 0.0, read, out);
     // Raw pixels: course judges them and encodes only what a report shows.
     put_output(base + ".pam", encode_pam(out.color));
     if (read.depth) put_output(base + ".pfm", encode_pfm(out.depth));

@@ -15,6 +15,7 @@
 #include "grading/commands/commands.hpp"
 #include "grading/commands/lab_sources.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/course_seed.hpp"
 #include "grading/judge/state_diff.hpp"
 
 namespace grading {
@@ -43,6 +44,13 @@ int bless_command(const BlessOptions& options) {
     require_lab_up_to_date(lab_binary, false, options.labs);
     ChildLimits limits;
     limits.timeout_seconds = 300.0;  // every image checkpoint of a lab in one child
+    // The course's seed, once: every grading after draws the same cases.
+    unsigned made = 0;
+    if (make_course_seed(source_root(), made))
+        std::printf(
+            "wrote %s (seed %u): the unit checks' random cases come from it; commit it "
+            "with the references\n",
+            kCourseSeedFile, made);
 
     for (const LabData& lab : labs) {
         const LabPlan plan = plan_lab(lab, 0, PlanFor::Blessing);

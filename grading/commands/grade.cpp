@@ -15,7 +15,6 @@
 #include <functional>
 #include <mutex>
 #include <optional>
-#include <random>
 #include <set>
 
 #include "framework/error.hpp"
@@ -23,6 +22,7 @@
 #include "grading/commands/commands.hpp"
 #include "grading/commands/lab_sources.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/course_seed.hpp"
 #include "grading/judge/file_isolation.hpp"
 #include "grading/judge/state_diff.hpp"
 #include "grading/report/reports.hpp"
@@ -62,17 +62,6 @@ struct RunClock {
             run.children_cpu_seconds = now.children - children;
     }
 };
-
-unsigned seed_from_env() {
-    const char* text = std::getenv("COURSE_SEED");
-    if (!text || !*text) return std::random_device{}();
-    char* end = nullptr;
-    const unsigned long v = std::strtoul(text, &end, 10);
-    if (*end != '\0' || v > 0xffffffffUL)
-        throw fw::UsageError("COURSE_SEED='" + std::string(text) +
-                             "' is not a number from 0 to 4294967295");
-    return static_cast<unsigned>(v);
-}
 
 void set_owner_mode(const std::string& path, mode_t mode) {
     if (chown(path.c_str(), 0, 0) != 0 || chmod(path.c_str(), mode) != 0)
@@ -194,6 +183,9 @@ LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& c
     result.checks = judge_lab(lab, plan, *child.outputs, out, threads);
     result.hidden_left_out = lab.file.hidden_checkpoints;
     result.hidden_points_left_out = lab.file.hidden_points;
+    const StateLeftOut state = state_checks_left_out(lab);
+    result.state_left_out = state.checks;
+    result.state_points_left_out = state.points;
     result.shader_cache_missed = child.cache_missed;
     if (child.run.ok()) {
         const std::string shader_error = shader_error_status(*child.outputs);
@@ -280,11 +272,14 @@ int grade_command(const GradeOptions& options) {
 
     // Orphans of a lab's child (a setsid() daemon) come back to course.
     if (!become_subreaper()) throw fw::Error("cannot make course a child subreaper (prctl)");
-    setup.seed = seed_from_env();
+    const CourseSeed seed = course_seed(source_root());
+    setup.seed = seed.value;
     setup.cache = shader_cache_of(options);
     setup.limits.timeout_seconds = options.timeout_seconds;
     GradeRun run;
     run.backend = backend_name(options);
+    run.seed = seed.value;
+    run.seed_from = seed.from;
     // The privileged layers, where this machine allows them (isolation.hpp).
     std::string namespaces_why, cgroups_why;
     setup.limits.namespaces = namespaces_usable(namespaces_why);

@@ -38,8 +38,9 @@ const std::map<CheckKind, std::set<std::string>> kFields = {
     {CheckKind::Forbidden, {"files", "names", "rule"}},
     {CheckKind::Buffer, {"buffer", "reference", "tolerance"}},
     {CheckKind::Portable, {}},
+    {CheckKind::State, {}},
 };
-const char* const kKinds = "image, probe, stat, unit, forbidden, buffer, portable";
+const char* const kKinds = "image, probe, stat, unit, forbidden, buffer, portable, state";
 
 bool is_size(const json& v) {
     return v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer();
@@ -244,6 +245,16 @@ Check parse_check(const LabData& lab, const fw::Checkpoint& cp, size_t index, co
         case CheckKind::Portable:
             c.spec = PortableCheck{};
             break;
+        case CheckKind::State:
+            // The solution's record is blessed with the checkpoint's image.
+            if (!std::any_of(cp.checks.begin(), cp.checks.end(), [](const json& other) {
+                    return other.is_object() && other.value("kind", "") == "image";
+                }))
+                w.fail("kind",
+                       "is \"state\", which needs an image check in the same checkpoint: "
+                       "course bless keeps the solution's record with its image");
+            c.spec = StateCheck{};
+            break;
     }
     return c;
 }
@@ -333,10 +344,6 @@ void parse_checks(LabData& lab) {
 LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
     LabPlan plan;
     plan.seed = seed;
-    // One stream per lab, so that a lab's cases do not depend on which
-    // other labs are graded with it.
-    std::seed_seq seq{seed, fnv1a(lab.id)};
-    std::mt19937 rng(seq);
     plan.job = {{"lab", lab.id}, {"renders", json::array()}, {"units", json::array()}};
     int next_id = 0;
     for (size_t k = 0; k < lab.file.checkpoints.size(); ++k) {
@@ -349,6 +356,11 @@ LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {
             plan.job["renders"].push_back(render);
         }
         if (what != PlanFor::Grading) continue;
+        // One stream per checkpoint, from the course's seed, the lab and the
+        // checkpoint's name: its cases depend on nothing else (which labs
+        // are graded with it, the checkpoints before it, the clock).
+        std::seed_seq seq{seed, fnv1a(lab.id), fnv1a(cp.name)};
+        std::mt19937 rng(seq);
         plan_units(plan, lab.id, cp, checks, rng, next_id);
     }
     return plan;

@@ -111,11 +111,17 @@ struct BufferCheck {
 // of its GL usage (NAME.usage.json).
 struct PortableCheck {};
 
+// A state check has nothing to set either: it compares the render's record
+// of what each draw was told (NAME.record.json) with the solution's, which
+// `course bless` keeps with the checkpoint's image (state_diff.hpp), so a
+// state the sheet fixes is checked even where today's frames agree.
+struct StateCheck {};
+
 struct Check {
     CheckKind kind = CheckKind::Image;
     double points = 0.0;
     std::variant<ImageCheck, ProbeCheck, StatCheck, UnitCheck, ForbiddenCheck, BufferCheck,
-                 PortableCheck>
+                 PortableCheck, StateCheck>
         spec;
     template <class T>
     const T& as() const {
@@ -204,6 +210,18 @@ std::string shader_error_status(const ChildOutputs& outputs);
 // judge_lab judges it, writing no report file.
 bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const RenderPlan& render,
                        const ChildOutputs& outputs);
+
+// Whether the lab's reference folder holds the course's records of the
+// solution's draws (a student's copy holds none: state_diff.hpp).
+bool has_reference_records(const LabData& lab);
+
+// The state checks that a copy without those records leaves out (judge_lab
+// does not judge them: the autograder does), and their points.
+struct StateLeftOut {
+    int checks = 0;
+    double points = 0.0;
+};
+StateLeftOut state_checks_left_out(const LabData& lab);
 
 // Every check of every checkpoint, from the child's raw outputs. Images for
 // the report go to out_dir/<lab>/<checkpoint>[.expected|.diff].png. The

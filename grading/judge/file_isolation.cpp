@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "framework/error.hpp"
+#include "grading/judge/frame_guesses.hpp"
 
 namespace grading {
 
@@ -120,11 +121,17 @@ void isolate_shader_mistakes(const LabData& lab, const LabPlan& plan,
     };
     if (!children.front().run.ok()) return;
 
+    FrameIsolations found;
     for (const RenderPlan* render : renders) {
         if (passes(0, *render)) continue;
         std::vector<std::string> restoring;
         for (size_t i = 1; i < jobs.size(); ++i)
             if (passes(i, *render)) restoring.push_back(names[i - 1]);
+        // Only a child that ended normally replaced its file.
+        FrameIsolation& here = found[render->checkpoint];
+        for (size_t i = 1; i < jobs.size(); ++i)
+            if (children[i].run.ok()) here.replaced.insert(names[i - 1]);
+        if (restoring.size() == 1) here.puts_right = restoring.front();
         if (restoring.size() != 1) continue;
         // Once, under the checkpoint's first failed check that started the search.
         const auto first = std::find_if(checks.begin(), checks.end(), [&](const CheckResult& c) {
@@ -134,6 +141,8 @@ void isolate_shader_mistakes(const LabData& lab, const LabPlan& plan,
         first->diagnosis += (first->diagnosis.empty() ? "" : "\n") + sentence;
         first->output += (first->output.empty() ? "" : "\n") + sentence;
     }
+    // The guesses from the frames, weighed again with what was found here.
+    say_frame_guesses(lab, checks, &found);
 }
 
 }  // namespace grading

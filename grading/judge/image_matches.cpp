@@ -119,52 +119,87 @@ bool ReferenceImages::matches(const std::string& relative, const fw::Image& fram
            fw::compare_images(frame, *e.image, verdict_only).passed;
 }
 
+std::string checkpoint_match_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                      const std::string& other_name) {
+    const fw::Checkpoint* found = nullptr;
+    for (const fw::Checkpoint& c : lab.file.checkpoints)
+        if (c.name == other_name) found = &c;
+    if (!found) return "";
+    const fw::Checkpoint& other = *found;
+    const std::vector<std::string> differ = differences(checkpoint, other);
+    const std::string text = "Your frame is the one checkpoint " + other.name + " expects";
+    if (differ.empty())
+        return text + " (" + other.description + "): compare what the two checkpoints ask.";
+    if (differ.size() == 1) {
+        const std::string& name = differ.front();
+        const std::string here = value_text(param(checkpoint, name)),
+                          there = value_text(param(other, name));
+        return text + " (" + name + " " + there + ", here " + here +
+               "): your code most likely treats " + name + " " + here + " as " + there + ".";
+    }
+    std::vector<std::string> pairs;
+    for (const std::string& name : differ) {
+        const nlohmann::json *here = param(checkpoint, name), *there = param(other, name);
+        pairs.push_back(name + " (" + value_text(there) + " there, " + value_text(here) + " here)");
+    }
+    return text + ", which differs from " + checkpoint.name + " in " + fw::join(pairs, ", ") +
+           ": your code most likely ignores these parameters or mixes them up.";
+}
+
 namespace {
 
-std::string checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+// The first other checkpoint with an image check whose reference `frame`
+// matches; "" when none.
+std::string matching_checkpoint(const LabData& lab, const fw::Checkpoint& checkpoint,
                                 const fw::Image& frame, const ReferenceImages::Summary& mine,
                                 const fw::CompareOptions& options, ReferenceImages& references) {
     const std::vector<fw::Checkpoint>& all = lab.file.checkpoints;
     for (size_t k = 0; k < all.size(); ++k) {
         const fw::Checkpoint& other = all[k];
-        if (other.name == checkpoint.name || !has_image_check(lab, k) ||
-            !references.matches(lab.reference(other.name), frame, mine, options))
-            continue;
-        const std::vector<std::string> differ = differences(checkpoint, other);
-        const std::string text = "Your frame is the one checkpoint " + other.name + " expects";
-        if (differ.empty())
-            return text + " (" + other.description + "): compare what the two checkpoints ask.";
-        if (differ.size() == 1) {
-            const std::string& name = differ.front();
-            const std::string here = value_text(param(checkpoint, name)),
-                              there = value_text(param(other, name));
-            return text + " (" + name + " " + there + ", here " + here +
-                   "): your code most likely treats " + name + " " + here + " as " + there + ".";
-        }
-        std::vector<std::string> pairs;
-        for (const std::string& name : differ) {
-            const nlohmann::json *here = param(checkpoint, name), *there = param(other, name);
-            pairs.push_back(name + " (" + value_text(there) + " there, " + value_text(here) +
-                            " here)");
-        }
-        return text + ", which differs from " + checkpoint.name + " in " + fw::join(pairs, ", ") +
-               ": your code most likely ignores these parameters or mixes them up.";
+        if (other.name != checkpoint.name && has_image_check(lab, k) &&
+            references.matches(lab.reference(other.name), frame, mine, options))
+            return other.name;
     }
     return "";
+}
+
+std::string checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                const fw::Image& frame, const ReferenceImages::Summary& mine,
+                                const fw::CompareOptions& options, ReferenceImages& references) {
+    const std::string other =
+        matching_checkpoint(lab, checkpoint, frame, mine, options, references);
+    return other.empty() ? "" : checkpoint_match_sentence(lab, checkpoint, other);
+}
+
+const MistakeFrame* mistake_frame(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                  const fw::Image& frame, const ReferenceImages::Summary& mine,
+                                  const fw::CompareOptions& options, ReferenceImages& references) {
+    const auto known = lab.mistake_frames.find(checkpoint.name);
+    if (known == lab.mistake_frames.end()) return nullptr;
+    for (const MistakeFrame& m : known->second)
+        if (references.matches(mistake_frames_dir(lab.dir) + "/" + m.image, frame, mine, options))
+            return &m;
+    return nullptr;
 }
 
 std::string mistake_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
                              const fw::Image& frame, const ReferenceImages::Summary& mine,
                              const fw::CompareOptions& options, ReferenceImages& references) {
-    const auto known = lab.mistake_frames.find(checkpoint.name);
-    if (known == lab.mistake_frames.end()) return "";
-    for (const MistakeFrame& m : known->second)
-        if (references.matches(mistake_frames_dir(lab.dir) + "/" + m.image, frame, mine, options))
-            return known_mistake_sentence(m);
-    return "";
+    const MistakeFrame* m = mistake_frame(lab, checkpoint, frame, mine, options, references);
+    return m ? known_mistake_sentence(*m) : "";
 }
 
 }  // namespace
+
+FrameMatches failed_frame_matches(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                  const fw::Image& frame, const fw::CompareOptions& options,
+                                  ReferenceImages& references) {
+    const ReferenceImages::Summary mine = ReferenceImages::summarise(frame);
+    FrameMatches out;
+    out.mistake = mistake_frame(lab, checkpoint, frame, mine, options, references);
+    out.checkpoint = matching_checkpoint(lab, checkpoint, frame, mine, options, references);
+    return out;
+}
 
 std::string matching_checkpoint_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
                                          const fw::Image& frame, const fw::CompareOptions& options,

@@ -17,6 +17,7 @@
 #include "framework/checkpoints.hpp"
 #include "framework/image.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/known_mistakes.hpp"
 
 namespace grading {
 
@@ -57,6 +58,26 @@ private:
     std::mutex mutex_;
     std::map<std::string, std::unique_ptr<Entry>> entries_;
 };
+
+// What a frame of `checkpoint` that fails its own reference matches under
+// `options`: the frame of a mistake the course knows (null when none), and
+// the first other checkpoint of the lab with an image check whose reference
+// it matches ("" when none). Guesses, which frame_guesses.hpp weighs
+// against the evidence before anything is said.
+struct FrameMatches {
+    const MistakeFrame* mistake = nullptr;
+    std::string checkpoint;
+};
+FrameMatches failed_frame_matches(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                  const fw::Image& frame, const fw::CompareOptions& options,
+                                  ReferenceImages& references);
+
+// "Your frame is the one checkpoint OTHER expects (P there, here Q): your
+// code most likely treats P Q as there." for a frame of `checkpoint` that is
+// the expected frame of checkpoint `other`, with the parameters in which
+// the two differ; "" when the lab has no checkpoint `other`.
+std::string checkpoint_match_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
+                                      const std::string& other);
 
 // The sentence for a frame of `checkpoint` that fails its own reference
 // under `options`: the first other checkpoint of the lab with an image check

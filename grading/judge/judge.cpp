@@ -16,6 +16,7 @@
 #include "framework/text.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/frame.hpp"
+#include "grading/judge/frame_guesses.hpp"
 #include "grading/judge/image_matches.hpp"
 #include "grading/judge/image_words.hpp"
 #include "grading/judge/judge_buffer.hpp"
@@ -105,9 +106,18 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
                          fw::compare_images(*image, reference, opt).difference);
     }
     std::string where = c.passed ? "" : describe_difference(*image, reference, c);
-    if (!c.passed && !c.size_mismatch)
-        r.diagnosis =
-            starting.empty() ? failed_frame_diagnosis(lab, cp, *image, opt, references) : starting;
+    // A frame that matches one the course knows is a guess, said once the
+    // evidence is in (say_frame_guesses); a part at its starting code is
+    // said in its place.
+    if (!c.passed && !c.size_mismatch) {
+        if (starting.empty()) {
+            const FrameMatches m = failed_frame_matches(lab, cp, *image, opt, references);
+            r.guess.mistake_image = m.mistake ? m.mistake->image : "";
+            r.guess.checkpoint = m.checkpoint;
+        } else {
+            r.diagnosis = starting;
+        }
+    }
     verdict(r, c.passed,
             expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where) +
                 (r.diagnosis.empty() ? "" : "\n" + r.diagnosis));
@@ -271,6 +281,9 @@ void judge_check(LabInputs& in, size_t k, size_t i, const RenderPlan* render, Fr
         case CheckKind::Portable:
             judge_frame_usage(*frame, result);
             break;
+        case CheckKind::State:
+            judge_state(in.lab, cp, in.outputs, result);
+            break;
         case CheckKind::Unit:
             // A unit check's results are evidence of its own function: only
             // that function's starting code is said in place of its mistakes.
@@ -320,6 +333,24 @@ void keep_written(const std::string& dir, const std::vector<std::string>& render
 
 }  // namespace
 
+bool has_reference_records(const LabData& lab) {
+    for (const fw::Checkpoint& cp : lab.file.checkpoints)
+        if (has_reference_record(lab, cp.name)) return true;
+    return false;
+}
+
+StateLeftOut state_checks_left_out(const LabData& lab) {
+    StateLeftOut out;
+    if (has_reference_records(lab)) return out;
+    for (const std::vector<Check>& checks : lab.checks)
+        for (const Check& c : checks)
+            if (c.kind == CheckKind::State) {
+                ++out.checks;
+                out.points += c.points;
+            }
+    return out;
+}
+
 bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const RenderPlan& render,
                        const ChildOutputs& outputs) {
     LabInputs in{lab, plan, outputs, "", json(), "", ReferenceImages(lab)};
@@ -331,7 +362,8 @@ bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const RenderPlan
     if (k == checkpoints.size()) return false;
     Frame frame(outputs, render, lab.id, "");
     for (size_t i = 0; i < lab.checks.at(k).size(); ++i) {
-        if (!lab.checks[k][i].renders()) continue;
+        // The frame's own checks: a state check reads no frame.
+        if (!lab.checks[k][i].renders() || lab.checks[k][i].kind == CheckKind::State) continue;
         CheckResult result;
         judge_check(in, k, i, &render, &frame, "", result);
         if (!result.passed) return false;
@@ -351,6 +383,7 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
     const std::vector<fw::Checkpoint>& checkpoints = lab.file.checkpoints;
     std::vector<std::vector<CheckResult>> by_checkpoint(checkpoints.size());
     std::vector<std::string> rendered(checkpoints.size());
+    const bool records = has_reference_records(lab);
     parallel_for(checkpoints.size(), threads, [&](size_t k) {
         std::optional<Frame> frame;
         auto r = renders.find(checkpoints[k].name);
@@ -359,8 +392,15 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
         by_checkpoint[k].resize(lab.checks.at(k).size());
         const std::string starting =
             starting_code_sentence(lab.root, lab.sources, lab.parts, checkpoints[k].parts);
-        for (size_t i = 0; i < by_checkpoint[k].size(); ++i)
+        // A copy without the course's records (a student's) leaves its
+        // state checks to the autograder (state_checks_left_out).
+        std::vector<CheckResult> judged;
+        for (size_t i = 0; i < by_checkpoint[k].size(); ++i) {
+            if (!records && lab.checks[k][i].kind == CheckKind::State) continue;
             judge_check(in, k, i, render, frame ? &*frame : nullptr, starting, by_checkpoint[k][i]);
+            judged.push_back(std::move(by_checkpoint[k][i]));
+        }
+        by_checkpoint[k] = std::move(judged);
         say_starting(starting, by_checkpoint[k]);
         if (frame) add_state_diff(lab, checkpoints[k], outputs, by_checkpoint[k]);
         if (frame) {
@@ -371,6 +411,7 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
     std::vector<CheckResult> results;
     for (std::vector<CheckResult>& checks : by_checkpoint)
         for (CheckResult& c : checks) results.push_back(std::move(c));
+    say_frame_guesses(lab, results, nullptr);
     keep_written(out_dir + "/" + lab.id, rendered, results);
     return results;
 }

@@ -38,8 +38,27 @@ std::vector<MistakeFrame> parse_frames(const json& doc, const fs::path& folder,
             throw fw::UsageError(where + ": no image " + frame.image + " beside the file");
         if (!f.contains("mistakes") || !f["mistakes"].is_array() || f["mistakes"].empty())
             throw fw::UsageError(where + ": needs a non-empty list \"mistakes\"");
-        for (const json& m : f["mistakes"])
-            frame.mistakes.push_back({text_field(m, "id", where), text_field(m, "why", where)});
+        for (const json& m : f["mistakes"]) {
+            KnownMistake known{text_field(m, "id", where), text_field(m, "why", where), "", {}, {}};
+            if (m.contains("file")) known.file = text_field(m, "file", where);
+            if (m.contains("units")) {
+                if (!m["units"].is_array())
+                    throw fw::UsageError(where + ": \"units\" must be a list of function names");
+                known.units.emplace();
+                for (const json& u : m["units"]) {
+                    if (!u.is_string())
+                        throw fw::UsageError(where +
+                                             ": \"units\" must be a list of function names");
+                    known.units->push_back(u.get<std::string>());
+                }
+            }
+            if (m.contains("state")) {
+                if (!m["state"].is_string())
+                    throw fw::UsageError(where + ": \"state\" must be a string");
+                known.state = m["state"].get<std::string>();
+            }
+            frame.mistakes.push_back(std::move(known));
+        }
         frames.push_back(std::move(frame));
     }
     return frames;
@@ -80,19 +99,29 @@ std::string mistake_frames_text(const std::vector<MistakeFrame>& frames) {
     json list = json::array();
     for (const MistakeFrame& f : frames) {
         json mistakes = json::array();
-        for (const KnownMistake& m : f.mistakes) mistakes.push_back({{"id", m.id}, {"why", m.why}});
+        for (const KnownMistake& m : f.mistakes) {
+            json entry = {{"id", m.id}, {"why", m.why}};
+            if (!m.file.empty()) entry["file"] = m.file;
+            if (m.units) entry["units"] = *m.units;
+            if (m.state) entry["state"] = *m.state;
+            mistakes.push_back(entry);
+        }
         list.push_back({{"image", f.image}, {"mistakes", mistakes}});
     }
     return json{{"frames", list}}.dump(1) + "\n";
 }
 
 std::string known_mistake_sentence(const MistakeFrame& frame) {
+    return known_mistake_sentence(frame.mistakes);
+}
+
+std::string known_mistake_sentence(const std::vector<KnownMistake>& mistakes) {
     std::vector<std::string> ids, whys;
-    for (const KnownMistake& m : frame.mistakes) {
+    for (const KnownMistake& m : mistakes) {
         ids.push_back(m.id);
         whys.push_back("code that " + m.why);
     }
-    const bool one = frame.mistakes.size() == 1;
+    const bool one = mistakes.size() == 1;
     // The frame is the evidence, not the code: another mistake, in another
     // file, may draw the same frame, so the sentence names the misconception
     // and leaves the student to find whether their code holds it.

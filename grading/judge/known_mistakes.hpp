@@ -5,18 +5,23 @@
 //
 //   CHECKPOINT.json  {"frames": [{"image": "CHECKPOINT.1.png",
 //                     "mistakes": [{"id": "pipeline-depth-greater",
-//                                   "why": "thinks a larger depth is nearer the eye"}]}]}
+//                                   "why": "thinks a larger depth is nearer the eye",
+//                                   "file": "labs/00_pipeline/pipeline.cpp",
+//                                   "units": [], "state": "Draw 1 of ..."}]}]}
 //   CHECKPOINT.1.png ...
 //
-// (several mistakes that draw the same frame share its entry). A student's
-// frame that fails its image check but matches one of these (each passes
-// the comparison with the other) is named: "Your frame is the one a known
-// mistake draws (ID): the frame of code that WHY. Another mistake can draw
-// the same frame: check whether your code does this." The frame is the only
-// evidence, so the sentence names the misconception, never a file.
+// (several mistakes that draw the same frame share its entry), each with its
+// signature: the file it lives in, the functions whose unit checks it fails
+// and what the state diff says of it at that checkpoint. A student's frame
+// that fails its image check but matches one of these (each passes the
+// comparison with the other) is named, where the evidence of the student's
+// own grading agrees with the signature (frame_guesses.hpp): "Your frame is
+// the one a known mistake draws (ID): the frame of code that WHY. Another
+// mistake can draw the same frame: check whether your code does this."
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +30,11 @@ namespace grading {
 struct KnownMistake {
     std::string id;   // the mistake suite's id
     std::string why;  // the misconception, a verb phrase: "thinks a larger depth is ..."
+    // Its signature, the evidence a student's frame must agree with before
+    // it is named (frame_guesses.hpp); each is absent from an older file:
+    std::string file;                               // the repository file it lives in
+    std::optional<std::vector<std::string>> units;  // the lab's unit checks it fails, by function
+    std::optional<std::string> state;  // the state diff's sentence at the checkpoint ("": none)
 };
 struct MistakeFrame {
     std::string image;  // a PNG beside the checkpoint's file
@@ -49,5 +59,7 @@ std::string mistake_frames_text(const std::vector<MistakeFrame>& frames);
 // WHY. Another mistake can draw the same frame: check whether your code does
 // this." (with "or of" between several).
 std::string known_mistake_sentence(const MistakeFrame& frame);
+// The same for some of a frame's mistakes (those the evidence agrees with).
+std::string known_mistake_sentence(const std::vector<KnownMistake>& mistakes);
 
 }  // namespace grading

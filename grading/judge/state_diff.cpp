@@ -318,6 +318,78 @@ std::string state_difference(const json& student, const json& reference, const f
     return "";
 }
 
+namespace {
+
+json read_record(const std::string& path) {
+    return json::parse(read_text_file(path), nullptr, /*allow_exceptions=*/false);
+}
+
+// The sentence for two records, "" where they agree or are not records.
+std::string difference_or_none(const json& student, const json& reference, const fw::Checkpoint& cp,
+                               const json& words, bool visible) {
+    try {
+        return state_difference(student, reference, cp, words, visible);
+    } catch (const json::exception&) {
+        return "";  // a record that is not one record.hpp writes: nothing to say
+    }
+}
+
+// For a guess that the frame is checkpoint `other`'s: whether the student's
+// draws are that checkpoint's reference draws, where the two checkpoints'
+// reference draws differ (CheckResult::FrameGuess::record_is_checkpoints).
+int record_is_checkpoints(const LabData& lab, const fw::Checkpoint& cp, const std::string& other,
+                          const json& student, const json& reference) {
+    if (other.empty() || !has_reference_record(lab, other)) return 0;
+    const json theirs = read_record(lab.root + "/" + reference_record(lab, other));
+    if (!valid_record(theirs)) return 0;
+    if (difference_or_none(reference, theirs, cp, json(), true).empty()) return 0;
+    return difference_or_none(student, theirs, cp, json(), true).empty() ? 1 : -1;
+}
+
+}  // namespace
+
+void judge_state(const LabData& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
+                 CheckResult& r) {
+    r.title = "state of the draws the sheet fixes";
+    const std::string rel = reference_record(lab, cp.name);
+    const std::string expected =
+        "Expected: each draw, dispatch, clear and read-back told the "
+        "state the solution's are (" +
+        rel + ")\n";
+    r.passed = false;
+    r.score = 0.0;
+    // (A copy with no records at all, a student's, does not judge it:
+    // judge_lab leaves it out.)
+    if (!has_reference_record(lab, cp.name)) {
+        r.output =
+            expected + "Observed: no reference record " + rel + "; run course bless " + lab.id;
+        return;
+    }
+    std::string bytes, why;
+    if (!outputs.read(cp.name + ".record.json", 16 * kMiB, bytes, why)) {
+        r.output = expected + "Observed: no record of the draws: " + why;
+        return;
+    }
+    const json student = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+    const json reference = read_record(lab.root + "/" + rel);
+    if (!valid_record(student)) {
+        r.output = expected + "Observed: the lab's record of the draws is not one";
+        return;
+    }
+    std::string sentence;
+    try {
+        sentence = state_difference(student, reference, cp, lab.state_words,
+                                    r.visibility == Visibility::Visible);
+    } catch (const json::exception& e) {
+        r.output = expected + "Observed: the lab's record of the draws cannot be read: " + e.what();
+        return;
+    }
+    r.passed = sentence.empty();
+    r.score = r.passed ? r.max_score : 0.0;
+    r.output = expected + "Observed: " + (r.passed ? "the same state in every one" : sentence);
+    if (!r.passed) r.diagnosis = sentence;
+}
+
 void add_state_diff(const LabData& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
                     std::vector<CheckResult>& results) {
     CheckResult* first = nullptr;
@@ -331,20 +403,26 @@ void add_state_diff(const LabData& lab, const fw::Checkpoint& cp, const ChildOut
     std::string bytes, why;
     if (!outputs.read(cp.name + ".record.json", 16 * kMiB, bytes, why)) return;
     const json student = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
-    const json reference = json::parse(
-        read_text_file(lab.root + "/" + reference_record(lab, cp.name)), nullptr, false);
+    const json reference = read_record(lab.root + "/" + reference_record(lab, cp.name));
     // A student's record that is not one: the child did not write it (the
     // render failed, and its checks say why); course grade has checked the
     // reference's before grading.
     if (!valid_record(student) || !valid_record(reference)) return;
-    std::string sentence;
-    try {
-        sentence = state_difference(student, reference, cp, lab.state_words,
-                                    first->visibility == Visibility::Visible);
-    } catch (const json::exception&) {
-        return;  // a record that is not one record.hpp writes: nothing to say
+    const std::string sentence = difference_or_none(student, reference, cp, lab.state_words,
+                                                    first->visibility == Visibility::Visible);
+    // The evidence a guess from the frame is weighed against (frame_guesses.hpp).
+    for (CheckResult& r : results) {
+        if (r.guess.mistake_image.empty() && r.guess.checkpoint.empty()) continue;
+        r.guess.state_compared = true;
+        r.guess.state = sentence;
+        r.guess.record_is_checkpoints =
+            record_is_checkpoints(lab, cp, r.guess.checkpoint, student, reference);
     }
-    if (sentence.empty()) return;
+    // A state check of the checkpoint says it already.
+    const bool said = std::any_of(results.begin(), results.end(), [](const CheckResult& r) {
+        return r.kind == CheckKind::State && !r.passed;
+    });
+    if (sentence.empty() || said) return;
     first->diagnosis += (first->diagnosis.empty() ? "" : "\n") + sentence;
     first->output += "\n" + sentence;
 }

@@ -44,10 +44,19 @@ std::string state_difference(const nlohmann::json& student, const nlohmann::json
                              const fw::Checkpoint& checkpoint, const nlohmann::json& words,
                              bool visible);
 
+// A `state` check (checks.hpp, StateCheck) of checkpoint `cp` into `r`
+// (its points and visibility set): passes where the child's record of the
+// draws and the reference record agree, else says the state diff's
+// sentence; fails, saying to bless, without the checkpoint's reference record.
+void judge_state(const LabData& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
+                 CheckResult& r);
+
 // For a checkpoint with a failed check and a reference record: reads both
 // records and the lab's words, and adds the sentence to the diagnosis (and
-// output) of its first failed check that reads the frame. Nothing when the
-// records agree or cannot be read.
+// output) of its first failed check that reads the frame, unless a failed
+// state check of the checkpoint says it. Nothing when the records agree or
+// cannot be read. Either way, the checks that hold a guess from their frame
+// (CheckResult::FrameGuess) get the records' evidence.
 void add_state_diff(const LabData& lab, const fw::Checkpoint& checkpoint,
                     const ChildOutputs& outputs, std::vector<CheckResult>& results);
 

@@ -14,6 +14,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/judge/cases.hpp"
+#include "grading/judge/course_seed.hpp"
 #include "grading/judge/starting_code.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"
@@ -162,6 +163,8 @@ bool is_staff_only(const std::string& rel) {
         "README.md",   "Dockerfile", ".dockerignore", "scripts/test.sh", "scripts/fresh-debian.sh",
         kStudentReadme};
     if (kStaffFolders.count(parts[0]) || kStaffFiles.count(rel)) return true;
+    // The seed of the course's random cases (grading/judge/course_seed.hpp).
+    if (rel == kCourseSeedFile) return true;
     // Grading a class on a cluster, and the staff's measurements.
     if (rel == "docs/performance.md" ||
         (parts.size() >= 2 && parts[0] == "docs" && parts[1] == "cluster"))

@@ -34,7 +34,7 @@ bool hidden(const CheckpointResult& cp) { return cp.visibility == Visibility::Hi
 std::string check_titles(const CheckpointResult& cp) {
     std::string text;
     for (const CheckResult* c : cp.checks) text += (text.empty() ? "" : "; ") + c->title;
-    return (cp.checks.size() == 1 ? "Check: " : "Checks: ") + text;
+    return "Checks: " + text;
 }
 
 // One test: the checkpoint's points; when visible, what failed first (the
@@ -97,12 +97,9 @@ std::string results_json(const GradeRun& run, Thumbnails& thumbnails, size_t cap
     results["gradable"] = true;
     results["score"] = max > 0 ? std::clamp(run.score() / max, 0.0, 1.0) : 0.0;
     results["message"] = capped(overview(run, passed, tests.size()), cap);
-    const std::string logs = lab_logs(run);
-    results["output"] =
-        capped((run.sandbox.empty() ? logs
-                                    : "Sandbox: " + report::sandbox_line(run.sandbox) + "\n" +
-                                          (logs.empty() ? "" : "\n" + logs)),
-               cap);
+    // Only what did not finish normally: the sandbox's layers are in the
+    // grading job's log (summary.txt), not in what the student reads.
+    results["output"] = capped(lab_logs(run), cap);
     results["tests"] = tests;
     return results.dump(2) + "\n";
 }

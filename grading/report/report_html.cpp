@@ -262,6 +262,18 @@ std::string lab_html(const LabResult& lab, size_t index, ImageTable& images) {
 }
 
 // A sentence on the hidden points of the run; empty when it has none.
+// The state checks a student's copy leaves out (it holds no solution's
+// record of the draws), which the autograder judges.
+std::string state_left_out_html(const GradeRun& run) {
+    const GradeRun::LeftOut state = run.state_left_out();
+    if (state.checkpoints == 0) return "";
+    return "<p class=\"hidden-points\">On submission the autograder also judges " +
+           std::to_string(state.checkpoints) +
+           (state.checkpoints == 1 ? " state check (" : " state checks (") + points(state.points) +
+           " points) that this copy leaves out: the state of your draws against the solution's "
+           "record of them.</p>\n";
+}
+
 std::string hidden_html(const GradeRun& run) {
     double hidden = 0, scored = 0;
     size_t checkpoints = 0;
@@ -321,7 +333,7 @@ std::string overview_html(const GradeRun& run) {
       << " checks passed &middot; " << run.labs.size() << (run.labs.size() == 1 ? " lab" : " labs")
       << (run.backend.empty() ? "" : " &middot; backend " + escape_markup(run.backend))
       << " &middot; " << points(run.seconds) << " s</p>\n"
-      << hidden_html(run) << sandbox_html(run.sandbox);
+      << hidden_html(run) << state_left_out_html(run) << sandbox_html(run.sandbox);
     if (run.labs.empty()) {
         h << "<p>No labs were graded.</p>\n";
         return h.str();

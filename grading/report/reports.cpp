@@ -331,6 +331,12 @@ std::string score_meaning(const GradeRun& run) {
                 " hidden checkpoint" + (left_out.checkpoints == 1 ? "" : "s") + " (" +
                 points(left_out.points) + " points) to these: the same code with other " +
                 "parameters.\n";
+    const GradeRun::LeftOut state = run.state_left_out();
+    if (state.checkpoints > 0)
+        text += "On submission the autograder also judges " + std::to_string(state.checkpoints) +
+                " state check" + (state.checkpoints == 1 ? "" : "s") + " (" + points(state.points) +
+                " points) that this copy leaves out: the state of your draws against the "
+                "solution's record of them, which this copy does not hold.\n";
     if (!run.passed())
         text +=
             "A check's points come when it passes; a unit check gives points in proportion "
@@ -362,6 +368,9 @@ std::string summary_table(const GradeRun& run, bool sandbox, size_t max_failed) 
                  " s in the labs' children (rendering)\n";
     if (sandbox && !run.sandbox.empty())
         table += "Sandbox: " + ascii(report::sandbox_line(run.sandbox)) + "\n";
+    if (sandbox && !run.seed_from.empty())
+        table += "Seed: " + std::to_string(run.seed) + " (" + ascii(run.seed_from) +
+                 "), of the unit checks' random cases\n";
     return table;
 }
 

@@ -23,6 +23,8 @@ const char* name_of(CheckKind kind) {
             return "buffer";
         case CheckKind::Portable:
             return "portable";
+        case CheckKind::State:
+            return "state";
     }
     return "?";
 }
@@ -84,14 +86,28 @@ bool GradeRun::passed() const {
     return std::all_of(labs.begin(), labs.end(), [](const LabResult& l) { return l.passed(); });
 }
 
-GradeRun::LeftOut GradeRun::hidden_left_out() const {
-    LeftOut out;
+namespace {
+
+// The count and points of what each lab left out, summed.
+GradeRun::LeftOut summed(const std::vector<LabResult>& labs, int LabResult::*count,
+                         double LabResult::*points) {
+    GradeRun::LeftOut out;
     for (const LabResult& lab : labs) {
-        out.checkpoints += lab.hidden_left_out;
-        out.points += lab.hidden_points_left_out;
+        out.checkpoints += lab.*count;
+        out.points += lab.*points;
     }
     out.points = rounded_points(out.points);
     return out;
+}
+
+}  // namespace
+
+GradeRun::LeftOut GradeRun::hidden_left_out() const {
+    return summed(labs, &LabResult::hidden_left_out, &LabResult::hidden_points_left_out);
+}
+
+GradeRun::LeftOut GradeRun::state_left_out() const {
+    return summed(labs, &LabResult::state_left_out, &LabResult::state_points_left_out);
 }
 
 }  // namespace grading

@@ -12,9 +12,9 @@ namespace grading {
 
 // The kinds of check (docs/contract.md, Checks), and a checkpoint's
 // visibility; their names are those of checkpoints.json and the reports.
-enum class CheckKind { Image, Probe, Stat, Unit, Forbidden, Buffer, Portable };
+enum class CheckKind { Image, Probe, Stat, Unit, Forbidden, Buffer, Portable, State };
 enum class Visibility { Visible, Hidden };
-// "image", "probe", "stat", "unit", "forbidden", "buffer", "portable"
+// "image", "probe", "stat", "unit", "forbidden", "buffer", "portable", "state"
 const char* name_of(CheckKind kind);
 const char* name_of(Visibility visibility);  // "visible", "hidden"
 // "visible" or "hidden" (fw::Checkpoint::visibility, checked when the file
@@ -41,6 +41,25 @@ struct CheckResult {
     // Images for the HTML report, relative to the output directory; empty
     // where the check has none.
     std::string rendered, expected, difference;
+    // A failed image check's frame as the course knows it, before and after
+    // the evidence is weighed (grading/judge/frame_guesses.hpp).
+    struct FrameGuess {
+        // The known mistakes' frame it matches (its image under
+        // reference/mistakes/) and the other checkpoint whose expected frame
+        // it is; "" where none.
+        std::string mistake_image, checkpoint;
+        // The state diff at this checkpoint: whether both records were there
+        // to compare, and its sentence ("" where they agree).
+        bool state_compared = false;
+        std::string state;
+        // For `checkpoint`: 1 when the student's record is that checkpoint's
+        // reference record and the two checkpoints' records differ (the
+        // parameters explain the draws), -1 when it is not, 0 when the
+        // records cannot tell.
+        int record_is_checkpoints = 0;
+        // The lines said for them, in `output` and `diagnosis`.
+        std::vector<std::string> lines;
+    } guess;
 };
 
 // How a lab's child ended as a whole: it ran, or why it did not ("crashed
@@ -72,6 +91,10 @@ struct LabResult {
     // student's copy: `course release` left them out), and their points.
     int hidden_left_out = 0;
     double hidden_points_left_out = 0.0;
+    // Its state checks that a copy without the solution's records (a
+    // student's) does not judge, and their points: the autograder judges them.
+    int state_left_out = 0;
+    double state_points_left_out = 0.0;
     // Its child's Mesa did not find its cache's key in --shader-cache
     // (seed_key_missed): said once on stderr, in no report.
     bool shader_cache_missed = false;
@@ -84,6 +107,10 @@ struct LabResult {
 struct GradeRun {
     std::vector<LabResult> labs;
     std::string backend;  // as asked: auto, osmesa, egl
+    // The seed of the unit checks' random cases and where it came from
+    // (grading/judge/course_seed.hpp), for summary.txt.
+    unsigned seed = 0;
+    std::string seed_from;
     double seconds = 0.0;
     // Seconds of CPU until the labs were judged (user and system): course's
     // own, all its threads (judging, the report's images), and its
@@ -104,6 +131,9 @@ struct GradeRun {
         double points = 0.0;
     };
     LeftOut hidden_left_out() const;
+    // The labs' state checks left out of this copy (`checkpoints`: the
+    // number of checks), and their points.
+    LeftOut state_left_out() const;
 };
 
 }  // namespace grading

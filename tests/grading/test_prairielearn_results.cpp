@@ -262,3 +262,55 @@ TEST_CASE("prairielearn results.json: an empty run") {
     CHECK(j["tests"].empty());
     fw::test::check_mentions(j["message"], {"no labs were graded", "Total: 0/0 points"});
 }
+
+namespace {
+
+// The value column of the row for `field` in the contract's table of
+// PrairieLearn's per-test fields (or the top-level one, `top`).
+std::string contract_row(const std::string& field, bool top) {
+    const std::string text = fw::test::read_text(fw::test::source_dir() + "/docs/contract.md");
+    const size_t section = text.find("### PrairieLearn's results.json");
+    REQUIRE(section != std::string::npos);
+    const size_t each = text.find("Each test:", section);
+    const size_t from = top ? section : each;
+    const size_t row = text.find("| `" + field + "` |", from);
+    REQUIRE(row != std::string::npos);
+    if (top) REQUIRE(row < each);
+    const size_t end = text.find('\n', row);
+    return text.substr(row, end - row);
+}
+
+}  // namespace
+
+TEST_CASE("prairielearn results.json: what the contract's tables say, the outputs do") {
+    // `description`: "`Checks: ` and the titles of its checks".
+    const std::string description = contract_row("description", false);
+    REQUIRE(description.find("`Checks: ` and the titles of its checks") != std::string::npos);
+    // `output`: only the labs whose child did not finish normally, empty
+    // when there is none (the sandbox's layers go to the job's log).
+    const std::string output = contract_row("output", true);
+    REQUIRE(output.find("(empty when there is none)") != std::string::npos);
+
+    const std::string dir = fw::test::out_dir() + "/contract";
+    fs::remove_all(dir);
+    GradeRun run;
+    LabResult lab;
+    lab.lab = "00_pipeline";
+    // One check, then two: both descriptions begin as the contract says.
+    lab.checks.push_back(check("00_pipeline", "one", "unit", "unit spin(v, <angle>)", 3, 3, true,
+                               "32 inputs within 1e-5"));
+    lab.checks.push_back(check("00_pipeline", "two", "probe", "probe (8, 8) colour", 1, 1, true,
+                               "Observed: (1, 0, 0)"));
+    lab.checks.push_back(check("00_pipeline", "two", "stat", "stat primitives_generated == 2", 1, 1,
+                               true, "Observed: 2"));
+    run.labs = {lab};
+    run.sandbox = {{"seccomp filter", true, "system calls a lab needs", true},
+                   {"namespaces", false, "not permitted here", true}};
+    grading::write_reports(run, dir, kPrairieLearn);
+    const json j = read_json(dir + "/results.json");
+    REQUIRE(j["tests"].size() == 2);
+    CHECK(j["tests"][0]["description"] == "Checks: unit spin(v, <angle>)");
+    CHECK(j["tests"][1]["description"] ==
+          "Checks: probe (8, 8) colour; stat primitives_generated == 2");
+    CHECK(j["output"] == "");
+}

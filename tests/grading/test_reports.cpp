@@ -357,8 +357,8 @@ TEST_CASE("a failed frame that a known mistake draws is named by the mistake's i
     const fw::Image black(srt.width, srt.height, fw::Rgba8{0, 0, 0, 255});
     fs::create_directories(folder);
     fw::write_png((folder / "trs.1.png").string(), black);
-    const grading::KnownMistake late{"transforms-late", "multiplies on the wrong side"},
-        blank{"transforms-blank", "draws nothing"};
+    const grading::KnownMistake late{"transforms-late", "multiplies on the wrong side", "", {}, {}},
+        blank{"transforms-blank", "draws nothing", "", {}, {}};
     fw::test::write_text((folder / "trs.json").string(),
                          grading::mistake_frames_text({{"trs.1.png", {late}}}));
     auto load = [&] {

@@ -32,7 +32,8 @@ const grading::LabData& Recorder::lab(const std::string& dir) const {
 }
 
 size_t Recorder::add(const std::string& lab_dir, const fs::path& out,
-                     const grading::KnownMistake& m) {
+                     const grading::KnownMistake& signature,
+                     const std::map<std::string, std::string>& states) {
     const grading::LabData& l = lab(lab_dir);
     size_t kept = 0;
     for (size_t k = 0; k < l.file.checkpoints.size() && kept < kFramesPerMistake; ++k) {
@@ -45,6 +46,9 @@ size_t Recorder::add(const std::string& lab_dir, const fs::path& out,
         const fw::Image reference = fw::read_png(l.root + "/" + l.reference(cp.name));
         if (fw::compare_images(frame, reference, options).passed) continue;
         ++kept;
+        grading::KnownMistake m = signature;
+        const auto state = states.find(cp.name);
+        m.state = state == states.end() ? "" : state->second;
         std::vector<Kept>& frames = kept_[lab_dir][cp.name];
         bool joined = false;
         for (Kept& f : frames)

@@ -27,9 +27,12 @@ public:
 
     // Keeps the failing frames of the graded lab `lab_dir` (NN_name) that
     // `course grade --out out` wrote (out/LAB/CHECKPOINT.png); a frame that
-    // matches one already kept for the checkpoint joins its entry. Returns
-    // how many frames it kept or joined.
-    size_t add(const std::string& lab_dir, const fs::path& out, const grading::KnownMistake& m);
+    // matches one already kept for the checkpoint joins its entry. `m`
+    // carries its signature's file and unit checks; `states` the state
+    // diff's sentence per checkpoint (none: its records agree), which the
+    // kept frame's entry gets. Returns how many frames it kept or joined.
+    size_t add(const std::string& lab_dir, const fs::path& out, const grading::KnownMistake& m,
+               const std::map<std::string, std::string>& states);
 
     // Replaces labs/NN_name/reference/mistakes/ of `source` for each of
     // `labs` with the frames kept (none: the folder is removed). Returns

@@ -51,6 +51,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -215,6 +216,40 @@ std::string lab_id(const std::string& dir) {
     return id;
 }
 
+// The functions whose unit checks of lab `lab` fail in `g` (entries
+// "LAB / CHECKPOINT / unit NAME (N cases)").
+std::vector<std::string> failed_units(const Grade& g, const std::string& lab) {
+    std::set<std::string> functions;
+    const std::string lead = " / unit ";
+    for (const std::string& name : g.failed) {
+        if (name.rfind(lab + " / ", 0) != 0) continue;
+        const size_t at = name.find(lead);
+        if (at == std::string::npos) continue;
+        const size_t from = at + lead.size(), end = name.find(" (", from);
+        functions.insert(name.substr(from, end == std::string::npos ? end : end - from));
+    }
+    return {functions.begin(), functions.end()};
+}
+
+// Per checkpoint of lab `lab`, the state diff's sentence in `g`'s outputs
+// (grading/judge/state_diff.hpp: "Draw 2 of scene `x`: ...", "scene `x`:
+// your Draw 3 ..."); none where the records agree.
+std::map<std::string, std::string> state_sentences(const Grade& g, const std::string& lab) {
+    static const std::regex sentence(
+        "^((Draw|Dispatch|Clear|Read-back) [0-9]+ of )?(scene|checkpoint) `[^`]*`: .*");
+    std::map<std::string, std::string> out;
+    for (const auto& [name, entry] : g.entries) {
+        if (name.rfind(lab + " / ", 0) != 0) continue;
+        const size_t from = lab.size() + 3, end = name.find(" / ", from);
+        const std::string checkpoint =
+            name.substr(from, end == std::string::npos ? end : end - from);
+        std::stringstream lines(entry.output);
+        for (std::string line; std::getline(lines, line);)
+            if (std::regex_match(line, sentence)) out.emplace(checkpoint, line);
+    }
+    return out;
+}
+
 struct LabTally {
     size_t mistakes = 0, caught = 0, named = 0, image_only = 0, image_only_named = 0;
     size_t state = 0, by_evidence = 0;  // with "state", and those the state diff names
@@ -344,7 +379,12 @@ TEST_CASE("mistakes: every realistic mistake loses points on a visible check") {
             image_failed = check_fails(g, lab_id(m.lab), "image", /*visible=*/true) &&
                            g.status[lab_id(m.lab)] == "ok";
             if (recorder) {
-                const size_t frames = recorder->add(m.lab, dir / "mistake", {m.id, m.why});
+                // Its frames, with the signature a student's evidence must
+                // agree with before it is named (frame_guesses.hpp).
+                const grading::KnownMistake signature{m.id, m.why, m.file,
+                                                      failed_units(g, lab_id(m.lab)), ""};
+                const size_t frames = recorder->add(m.lab, dir / "mistake", signature,
+                                                    state_sentences(g, lab_id(m.lab)));
                 result += "; " + std::to_string(frames) + " frames kept";
             }
             for (const auto& [id, status] : g.status)

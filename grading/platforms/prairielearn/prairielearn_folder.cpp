@@ -9,7 +9,7 @@
 //   (grading/platforms/prairielearn/), the entrypoint, and every lab's checkpoints file
 //   and references, hidden ones included, which `course autograde` grades
 //   with, and each lab's unit cases (cases.json in its grading folder,
-//   recorded for the autograder, hidden checks too, from a fresh seed): the
+//   recorded for the autograder, hidden checks too, from the course seed): the
 //   image's `course` has no references to draw them from; and
 //   solution_shaders/NN_name/FILE, the course's own text of each student
 //   shader, which `course grade` reads to tell which file is wrong (the
@@ -18,13 +18,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "framework/error.hpp"
 #include "grading/judge/cases.hpp"
 #include "grading/judge/checks.hpp"
+#include "grading/judge/course_seed.hpp"
 #include "grading/judge/file_isolation.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
@@ -60,7 +60,7 @@ Plan plan_folder(const fs::path& source) {
     plan.files = project_files(source.string());
     plan.students = student_files(source, plan.files);
     plan.labs = discover_labs(source.string());
-    plan.seed = std::random_device{}();
+    plan.seed = course_seed(source.string()).value;
     for (LabData& lab : plan.labs) {
         parse_checks(lab);
         const nlohmann::json cases =
@@ -110,7 +110,8 @@ run. PrairieLearn pulls only public images, so the course is split in two.
   `serverFilesCourse/{FOLDER}/`, which students cannot read. It holds
   `grade.sh`, the entrypoint, and every lab's checkpoints file and references,
   hidden ones included, with the unit checks' cases (`labs/*/grading/cases.json`,
-  drawn from a new seed each time this folder is written) and the course's own
+  drawn from the course's seed, labs/course_seed.json,
+  so that every grading draws the same cases) and the course's own
   text of the shaders students edit (`solution_shaders/`, which tells a student
   which shader file is wrong): the image holds no reference code, since that
   would give the solutions away. The grader keeps this folder from the
