@@ -76,13 +76,18 @@ std::string file_name(const std::string& path) {
 std::string ruled_out(const KnownMistake& mistake, const CheckResult::FrameGuess& guess,
                       const std::map<std::string, bool>& unit_passes,
                       const FrameIsolation* isolation) {
-    // The unit checks: one it fails passes here.
-    if (mistake.units)
-        for (const std::string& f : *mistake.units) {
+    // The unit checks: those that fail here are those that fail under it.
+    if (mistake.units) {
+        const std::vector<std::string>& fails = *mistake.units;
+        for (const std::string& f : fails) {
             const auto it = unit_passes.find(f);
             if (it != unit_passes.end() && it->second)
                 return "your `" + f + "()` passes its unit check, which " + mistake.id + " fails";
         }
+        for (const auto& [f, passed] : unit_passes)
+            if (!passed && std::find(fails.begin(), fails.end(), f) == fails.end())
+                return "your `" + f + "()` fails its unit check, which " + mistake.id + " passes";
+    }
     // The state diff: it says something else here than of the mistake.
     if (mistake.state && guess.state_compared && *mistake.state != guess.state) {
         if (guess.state.empty())

@@ -8,8 +8,9 @@
 // (file_isolation.hpp). A guess is said only where that evidence agrees:
 //
 // - a known mistake, where each of its signature's parts that can be
-//   compared agrees: the unit checks it fails fail here too (one of them
-//   passing here rules it out), the state diff here says what it says of the
+//   compared agrees: the unit checks that fail here are those it fails (one
+//   of them passing here, or another failing, rules it out), the state diff
+//   here says what it says of the
 //   mistake (nothing, or the same sentence), and the file that holds it is
 //   the one file whose replacement puts the frame right (a replacement of
 //   another file doing so, or of its own file not doing so, rules it out).

@@ -99,9 +99,16 @@ TEST_CASE("frame guesses: a unit check that the known mistake fails passes here,
     CHECK(out.find("The frame also matches a known mistake (transforms-late), but your "
                    "`translate()` passes its unit check, which transforms-late fails, so it is "
                    "not transforms-late.") != std::string::npos);
-    // Another function's unit check says nothing of this mistake.
-    out = said(lab, {failed_image("trs.1.png", ""), unit("rotate_z", true)});
+    // Another function's unit check that passes says nothing of this mistake;
+    // one that fails, which the mistake passes, rules it out.
+    out = said(lab,
+               {failed_image("trs.1.png", ""), unit("translate", false), unit("rotate_z", true)});
     CHECK(out.find(kNamed) != std::string::npos);
+    out = said(lab,
+               {failed_image("trs.1.png", ""), unit("translate", false), unit("rotate_z", false)});
+    CHECK(out.find(kNamed) == std::string::npos);
+    CHECK(out.find("but your `rotate_z()` fails its unit check, which transforms-late passes") !=
+          std::string::npos);
 }
 
 TEST_CASE("frame guesses: the state diff must say of the student what it says of the mistake") {

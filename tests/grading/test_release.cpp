@@ -151,9 +151,10 @@ TEST_CASE("release: which files carry markers") {
         CHECK_MESSAGE(!grading::is_marked_source(no), no);
 }
 
-TEST_CASE("release: the solution's records and the sheet's state words are staff files") {
-    for (const char* staff :
-         {"labs/07_x/reference/blend_over.record.json", "labs/07_x/grading/state_words.json"})
+TEST_CASE("release: the solution's records, the sheet's state words and the seed are staff files") {
+    // The course's seed: with it, a student could draw the autograder's cases.
+    for (const char* staff : {"labs/07_x/reference/blend_over.record.json",
+                              "labs/07_x/grading/state_words.json", "labs/course_seed.json"})
         CHECK_MESSAGE(grading::is_staff_only(staff), staff);
     for (const char* student : {"labs/07_x/reference/blend_over.png",
                                 "labs/07_x/reference/mistakes/blend_over.json", "labs/07_x/x.cpp"})
@@ -347,8 +348,10 @@ TEST_CASE("release: this repository's markers are well formed and its docs quote
             for (int n = b.begin_line + 1; n < b.end_line; ++n) {
                 std::string t = lines[n - 1];
                 t.erase(0, t.find_first_not_of(" \t"));
-                // Long code lines only: short ones ("return P;") occur anywhere.
-                if (t.size() >= 30 && t.rfind("//", 0) != 0)
+                // Long code lines only: short ones ("return P;") occur anywhere;
+                // and a path the mistake list gives (`"file": "labs/..."`,
+                // which the known mistakes' signatures repeat) is no solution.
+                if (t.size() >= 30 && t.rfind("//", 0) != 0 && t.rfind("\"file\": ", 0) != 0)
                     solution_lines.push_back({file + ":" + std::to_string(n), t});
             }
     }

@@ -233,10 +233,13 @@ std::vector<std::string> failed_units(const Grade& g, const std::string& lab) {
 
 // Per checkpoint of lab `lab`, the state diff's sentence in `g`'s outputs
 // (grading/judge/state_diff.hpp: "Draw 2 of scene `x`: ...", "scene `x`:
-// your Draw 3 ..."); none where the records agree.
+// your Draw 3 ...", under a failed frame check or as a state check's
+// Observed line); none where the records agree.
 std::map<std::string, std::string> state_sentences(const Grade& g, const std::string& lab) {
+    // Under a failed frame check, or as a failed state check's Observed line.
     static const std::regex sentence(
-        "^((Draw|Dispatch|Clear|Read-back) [0-9]+ of )?(scene|checkpoint) `[^`]*`: .*");
+        "^(Observed: )?(((Draw|Dispatch|Clear|Read-back) [0-9]+ of )?(scene|checkpoint) "
+        "`[^`]*`: .*)");
     std::map<std::string, std::string> out;
     for (const auto& [name, entry] : g.entries) {
         if (name.rfind(lab + " / ", 0) != 0) continue;
@@ -244,8 +247,9 @@ std::map<std::string, std::string> state_sentences(const Grade& g, const std::st
         const std::string checkpoint =
             name.substr(from, end == std::string::npos ? end : end - from);
         std::stringstream lines(entry.output);
+        std::smatch m;
         for (std::string line; std::getline(lines, line);)
-            if (std::regex_match(line, sentence)) out.emplace(checkpoint, line);
+            if (std::regex_match(line, m, sentence)) out.emplace(checkpoint, m[2].str());
     }
     return out;
 }
