@@ -350,6 +350,9 @@ TEST_CASE("canvas.csv: the roster's columns, Points Possible, 0 for no submissio
         {"Lee, Kim", "1004", "", "klee", "Sec B", "2.5", "1.25"},
         {"Nobody, Ned", "1005", "S5", "nned", "Sec B", "0", "0"}};
     CHECK(canvas == expected);
+    // Canvas's import of canvas.csv alone leaves Pat's pipeline as it is.
+    const json pat = {{"1002", {{"pipeline", "1"}, {"transforms (102)", "1"}}}};
+    CHECK(import_into("canvas", pat, {dir / "canvas.csv"})["1002"] == pat["1002"]);
     CHECK(read_back(dir / "canvas_2.csv") ==
           Table{{"Student", "ID", "SIS User ID", "SIS Login ID", "Section", "transforms (102)"},
                 {"Points Possible", "", "", "", "", "10"},
@@ -460,6 +463,13 @@ TEST_CASE("moodle.csv: by the roster's email address, no blank or '-', no Total 
     // address it does not know.
     CHECK(read_back(dir / "moodle.csv") ==
           Table{{"Email address", "pipeline", "transforms"}, {"jdoe@uni.edu", "5", "7"}});
+    // Moodle's import of moodle.csv alone leaves Pat's pipeline as it is;
+    // it refuses the whole file for an address it does not know.
+    const json two = {{"jdoe@uni.edu", json::object()}, {"pobrien@uni.edu", {{"pipeline", "1"}}}};
+    CHECK(import_into("moodle", two, {dir / "moodle.csv"}, "Email address")["pobrien@uni.edu"] ==
+          two["pobrien@uni.edu"]);
+    CHECK(import_into("moodle", {{"pobrien@uni.edu", json::object()}}, {dir / "moodle.csv"},
+                      "Email address") == json{{"refused", "usermappingerror: jdoe@uni.edu"}});
     CHECK(read_back(dir / "moodle_2.csv") ==
           Table{{"Email address", "transforms"}, {"pobrien@uni.edu", "10"}});
     CHECK(read_back(dir / "moodle_items.csv") ==
