@@ -580,7 +580,7 @@ TEST_CASE("course grade-class --roster: canvas.csv and moodle.csv of a class of 
     const fs::path roster =
         write_roster(t,
                      "Student,ID,SIS User ID,SIS Login ID,Section,Lab 1 (77),Current Score\r\n"
-                     "    Points Possible,,,,,98,(read only)\r\n"
+                     "    Points Possible,,,,,100,(read only)\r\n"
                      "\"Liddell, Alice\",11,A1,alice@uni.edu,S1,,\r\n"
                      "\"Carroll, Carol\",12,C1,carol@uni.edu,S1,,\r\n");
     const fw::test::CommandResult r = fw::test::run_command(
@@ -603,10 +603,10 @@ TEST_CASE("course grade-class --roster: canvas.csv and moodle.csv of a class of 
                 {"Carroll, Carol", "12", "C1", "carol@uni.edu", "S1", "0"}});
     CHECK(read_back(t / "out/moodle.csv") ==
           Table{{"Email address", "transforms"}, {"alice@uni.edu", max}});
-    // The roster's Lab 1 is out of 98.
-    if (max != "98")
-        check_mentions(r.output, {"column 'Lab 1 (77)': the labs are out of " + max +
-                                  " points, but the roster's Points Possible for it is 98"});
+    // The roster's Lab 1 is out of 100, which Canvas keeps.
+    REQUIRE(max != "100");
+    check_mentions(r.output, {"warning: canvas.csv: column 'Lab 1 (77)': the labs are out of " +
+                              max + " points, but the roster's Points Possible for it is 100"});
 
     // In two slices: none writes canvas.csv (each would give the other's
     // students 0); merge-class writes the one run's, byte for byte.
