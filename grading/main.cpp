@@ -179,14 +179,18 @@ Command add_autograde(CLI::App& app, grading::AutogradeOptions& a) {
     return {autograde, [&a] { return grading::autograde_command(a); }};
 }
 
-// canvas.csv's options, grade-class's and merge-class's alike.
+// canvas.csv's and moodle.csv's options, grade-class's and merge-class's alike.
 void add_lms_options(CLI::App* cmd, grading::cls::LmsOptions& lms) {
     cmd->add_option("--roster", lms.roster,
-                    "Canvas's gradebook export (Grades > Export): canvas.csv is written from it");
+                    "Canvas's gradebook export (Grades > Export), or Moodle's (Export > Plain "
+                    "text file): canvas.csv and moodle.csv name its students as it does");
     cmd->add_option("--canvas-column", lms.canvas_columns,
                     "canvas.csv's assignment columns: NAME, one column for the total of the "
                     "labs; or LAB=NAME to title a lab's column (default: a column per lab, "
                     "titled by its id); repeat it for several labs");
+    cmd->add_flag("--moodle-total", lms.moodle_total,
+                  "moodle.csv has a Total column after the labs' (import it only into a grade "
+                  "item of its own: Moodle's course total adds the labs up already)");
 }
 
 }  // namespace

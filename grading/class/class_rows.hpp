@@ -34,7 +34,7 @@ ClassResult read_class(const std::filesystem::path& dir);
 
 // `course merge-class OUT DIR...`: the slices' rows and reports in OUT, and
 // the gradebook one run would have written, with the import files of
-// Canvas and Moodle (`lms`, as grade-class's --roster and --canvas-column).
+// Canvas and Moodle (`lms`, as grade-class's --roster, --canvas-column and --moodle-total).
 // Exit status as grade-class's.
 int merge_class_command(const std::string& out, const std::vector<std::string>& dirs,
                         const LmsOptions& lms = {});

@@ -23,7 +23,7 @@ struct GradeClassOptions {
     std::string shard;              // "K/N": the K-th of N fixed slices, from 1
     std::string timeout = "60";     // seconds each lab may run, as on Gradescope
     std::string backend;            // passed on to `course grade`; empty: its default
-    LmsOptions lms;                 // --roster, --canvas-column (lms_export.hpp)
+    LmsOptions lms;                 // --roster, --canvas-column, --moodle-total (lms_export.hpp)
 };
 
 // Exit status: 0 every submission graded (whatever its grade), 1 some could

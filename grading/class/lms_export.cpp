@@ -1,6 +1,7 @@
 #include "grading/class/lms_export.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -98,12 +99,6 @@ std::string who_text(const std::vector<ClassRow>& rows, const SubmissionStudent&
     return t;
 }
 
-bool is_email(const std::string& s) {
-    const size_t at = s.find('@');
-    return at != std::string::npos && at > 0 && at + 1 < s.size() &&
-           s.find_first_of(" \t,;") == std::string::npos;
-}
-
 // Removes an earlier run's file that this run does not write; says so.
 void remove_stale(const fs::path& file) {
     std::error_code ec;
@@ -144,7 +139,18 @@ std::vector<LmsExport::Column> columns_asked(const std::vector<std::string>& ask
 // title as it is.
 std::string roster_header(const Roster& roster, const std::string& title) {
     const std::vector<std::string>& h = roster.header;
-    if (std::find(h.begin() + long(roster.info_columns), h.end(), title) != h.end()) return title;
+    if (std::find(h.begin() + long(roster.info_columns), h.end(), title) != h.end()) {
+        // Canvas's export titles every assignment "Title (id)"
+        // (lib/gradebook_exporter.rb, csv_data: title_with_id); a header
+        // after Section without an id is a custom column, whose cells
+        // Canvas's import takes as its text (process_custom_column_headers).
+        if (title_of(title).empty())
+            throw fw::UsageError("--canvas-column '" + title + "': '" + title +
+                                 "' is a custom column of the roster's gradebook, not an "
+                                 "assignment: Canvas's import would write the points into it as "
+                                 "text; give the assignment's title");
+        return title;
+    }
     std::vector<std::string> same;
     for (size_t i = roster.info_columns; i < h.size(); ++i)
         if (title_of(h[i]) == title) same.push_back(h[i]);
@@ -160,14 +166,19 @@ std::string roster_header(const Roster& roster, const std::string& title) {
 
 LmsExport::LmsExport(const LmsOptions& o,
                      const std::vector<std::pair<std::string, std::string>>& labs)
-    : labs_(labs) {
+    : labs_(labs), moodle_total_(o.moodle_total) {
     if (o.roster.empty() && !o.canvas_columns.empty())
         throw fw::UsageError(
             "--canvas-column titles canvas.csv's columns, which only --roster writes: give "
             "Canvas's gradebook export with --roster");
     if (!o.roster.empty()) {
-        roster_ = read_canvas_roster(o.roster);
+        roster_ = read_roster(o.roster);
         has_roster_ = true;
+        if (roster_.kind == Roster::Kind::moodle && !o.canvas_columns.empty())
+            throw fw::UsageError("--canvas-column titles canvas.csv's columns, and --roster '" +
+                                 o.roster +
+                                 "' is Moodle's grade export, from which no canvas.csv is "
+                                 "written");
     }
     std::vector<std::string> ids;
     for (const auto& [id, dir] : labs) ids.push_back(id);
@@ -175,7 +186,8 @@ LmsExport::LmsExport(const LmsOptions& o,
     std::set<std::string> headers;
     for (Column& col : columns_) {
         check_title(col.header, "--canvas-column '" + col.header + "'");
-        if (has_roster_) col.header = roster_header(roster_, col.header);
+        if (has_roster_ && roster_.kind == Roster::Kind::canvas)
+            col.header = roster_header(roster_, col.header);
         if (!headers.insert(col.header).second)
             throw fw::UsageError("--canvas-column: two columns are titled '" + col.header + "'");
     }
@@ -183,80 +195,246 @@ LmsExport::LmsExport(const LmsOptions& o,
 
 namespace {
 
-// moodle.csv: the email address identifies the user (Moodle's "Identify
-// user by": Email address to useremail). A row without one would take the
-// grades of the row before it (Moodle keeps the last user found), so such a
-// student is left out and named in `no_email`.
-std::string moodle_text(const std::vector<ClassRow>& rows, const std::vector<std::string>& labs,
-                        const std::map<std::pair<size_t, int>, std::string>& roster_email,
-                        std::vector<std::string>& no_email) {
-    std::vector<std::string> header = {"Email address"};
-    header.insert(header.end(), labs.begin(), labs.end());
-    header.push_back("Total");
-    std::string text = line_of(header);
-    std::map<std::string, std::string> seen;
-    for (const SubmissionStudent& w : submission_students(rows)) {
-        const Student* st = student_of(rows, w);
-        const std::string& key = rows[w.row].submission.key;
-        std::string email = st ? st->email : "";
-        const auto listed = roster_email.find({w.row, w.student});
-        if (email.empty() && listed != roster_email.end()) email = listed->second;
-        if (email.empty() && is_email(key)) email = key;
-        if (email.empty()) {
-            no_email.push_back(who_text(rows, w));
-            continue;
-        }
-        const auto [first, fresh] = seen.emplace(email, key);
-        if (!fresh)
-            std::fprintf(stderr,
-                         "grade-class: moodle.csv: %s is in submissions %s and %s; Moodle "
-                         "keeps the later row's grades\n",
-                         email.c_str(), first->second.c_str(), key.c_str());
-        // "-" is Moodle's "no grade", for a new grade item as for one it has.
-        std::vector<std::string> fields = {email};
-        for (const std::string& id : labs) {
-            const std::optional<double> v = lab_score(rows[w.row], id);
-            fields.push_back(v ? points(*v) : "-");
-        }
-        const std::optional<double> total = sum_score(rows[w.row], labs);
-        fields.push_back(total ? points(*total) : "-");
-        text += line_of(fields);
-    }
+// A file to import: the columns that identify the student, then a column
+// of points per lab (or per total); a row per student.
+struct ImportTable {
+    std::vector<std::string> lead, columns;
+    // Canvas's Points Possible row: its identifier cells, a cell per column.
+    std::vector<std::string> possible_lead, possible;
+    struct Row {
+        std::vector<std::string> lead;
+        std::vector<std::optional<std::string>> values;  // none: a lab not graded
+        std::string who;
+    };
+    std::vector<Row> rows;
+};
+
+// The columns of `t` that `present` keeps, as one file's text.
+std::string table_text(const ImportTable& t, const std::vector<bool>& present,
+                       const std::vector<const ImportTable::Row*>& rows) {
+    const auto kept = [&](std::vector<std::string> fields,
+                          const std::vector<std::optional<std::string>>& cells) {
+        for (size_t c = 0; c < cells.size(); ++c)
+            if (present[c]) fields.push_back(cells[c].value_or(""));
+        return line_of(fields);
+    };
+    const auto all = [](const std::vector<std::string>& v) {
+        return std::vector<std::optional<std::string>>(v.begin(), v.end());
+    };
+    std::string text = kept(t.lead, all(t.columns));
+    if (!t.possible_lead.empty()) text += kept(t.possible_lead, all(t.possible));
+    for (const ImportTable::Row* r : rows) text += kept(r->lead, r->values);
     return text;
 }
 
-// roster_match.csv, for the staff: each roster student's submission and how
-// it was found, then the submissions' students no roster row names. Each
-// line is said on stderr too.
+// Removes BASE_N.csv from an earlier run for each N >= `from`.
+void remove_stale_parts(const fs::path& out, const std::string& base, size_t from) {
+    const std::regex part(base + R"(_(\d+)\.csv)");
+    std::error_code ec;
+    std::vector<fs::path> stale;
+    for (const fs::directory_entry& e : fs::directory_iterator(out, ec)) {
+        std::smatch m;
+        const std::string name = e.path().filename().string();
+        if (std::regex_match(name, m, part) && std::stoul(m[1].str()) >= from)
+            stale.push_back(e.path());
+    }
+    std::sort(stale.begin(), stale.end());
+    for (const fs::path& f : stale) remove_stale(f);
+}
+
+// Writes BASE.csv with every column and the rows that have a value in each,
+// then BASE_2.csv, BASE_3.csv, ... for the other rows: one file per set of
+// columns they have values in, holding only those columns. Neither import
+// leaves a grade alone for a blank cell (Canvas: lib/gradebook_importer.rb,
+// no_change_to_value? takes a blank under a score for a change, to no score;
+// Moodle: grade/import/csv/classes/load_data.php, update_grade_item makes ''
+// and '-' a null grade, which grade/import/lib.php, grade_import_commit,
+// writes over the one it has), while a student or a column that the file
+// does not have keeps the grade it has. Says on stderr who is not in
+// BASE.csv, and where the rest of their points are.
+void write_split(const fs::path& out, const std::string& base, const ImportTable& t) {
+    const size_t n = t.columns.size();
+    std::vector<std::vector<bool>> sets = {std::vector<bool>(n, true)};
+    std::vector<std::vector<const ImportTable::Row*>> parts(1);
+    for (const ImportTable::Row& r : t.rows) {
+        std::vector<bool> present(n);
+        std::vector<std::string> missing;
+        for (size_t c = 0; c < n; ++c) {
+            present[c] = r.values[c].has_value();
+            if (!present[c]) missing.push_back(t.columns[c]);
+        }
+        if (missing.size() == n) {
+            std::fprintf(stderr, "grade-class: %s.csv: no row for %s, whose %s not graded\n",
+                         base.c_str(), r.who.c_str(),
+                         (fw::join(missing, ", ") + (n > 1 ? " were" : " was")).c_str());
+            continue;
+        }
+        const size_t k = size_t(std::find(sets.begin(), sets.end(), present) - sets.begin());
+        if (k == sets.size()) {
+            sets.push_back(present);
+            parts.emplace_back();
+        }
+        parts[k].push_back(&r);
+        if (k > 0)
+            std::fprintf(
+                stderr,
+                "grade-class: %s.csv: no row for %s, whose %s not graded; %s_%zu.csv "
+                "has the other columns\n",
+                base.c_str(), r.who.c_str(),
+                (fw::join(missing, ", ") + (missing.size() > 1 ? " were" : " was")).c_str(),
+                base.c_str(), k + 1);
+    }
+    for (size_t k = 0; k < sets.size(); ++k)
+        write_whole(out / (k ? base + "_" + std::to_string(k + 1) + ".csv" : base + ".csv"),
+                    table_text(t, sets[k], parts[k]));
+    remove_stale_parts(out, base, sets.size() + 1);
+    if (sets.size() > 1) {
+        const std::string last = base + "_" + std::to_string(sets.size()) + ".csv";
+        std::fprintf(stderr,
+                     "grade-class: import %s_2.csv%s after %s.csv: a student or a column that a "
+                     "file leaves out keeps the grade the gradebook has, while a blank cell "
+                     "would erase it\n",
+                     base.c_str(), sets.size() > 2 ? (" to " + last).c_str() : "", base.c_str());
+    }
+}
+
+std::vector<std::optional<std::string>> lab_cells(const ClassRow& r,
+                                                  const std::vector<std::string>& labs,
+                                                  bool total) {
+    std::vector<std::optional<std::string>> cells;
+    for (const std::string& id : labs) {
+        const std::optional<double> v = lab_score(r, id);
+        cells.push_back(v ? std::optional<std::string>(points(*v)) : std::nullopt);
+    }
+    if (total) {
+        const std::optional<double> v = sum_score(r, labs);
+        cells.push_back(v ? std::optional<std::string>(points(*v)) : std::nullopt);
+    }
+    return cells;
+}
+
+// A roster student as messages name them.
+std::string roster_who(const RosterStudent& st) {
+    const std::string& key = !st.sis_login_id.empty() ? st.sis_login_id : st.id_number;
+    return st.name + (key.empty() ? "" : " (" + key + ")");
+}
+
+// moodle.csv: each matched roster student by the roster's identifiers, the
+// Email address (Moodle's "Identify user by" Email address) and, where the
+// roster has one for every such student, the ID number. A student the
+// roster gives no email address is left out (Moodle gives a row with a
+// blank identifier the grades of the row before: load_data.php,
+// map_user_data_with_value skips the blank value), said in `no_email`.
+ImportTable moodle_table(const Roster& roster, const RosterMatch& match,
+                         const std::vector<ClassRow>& rows, const std::vector<std::string>& labs,
+                         bool total, std::vector<std::string>& no_email) {
+    std::vector<size_t> kept;
+    size_t without_number = 0;
+    for (size_t i = 0; i < roster.students.size(); ++i) {
+        if (!match.of_student[i].matched) continue;
+        if (roster.students[i].email.empty()) {
+            no_email.push_back(roster_who(roster.students[i]));
+            continue;
+        }
+        kept.push_back(i);
+        without_number += roster.students[i].id_number.empty();
+    }
+    const bool numbers = roster.has_id_number && without_number == 0;
+    if (roster.has_id_number && without_number)
+        std::fprintf(stderr,
+                     "grade-class: moodle.csv has no ID number column: %zu of its students have "
+                     "none on the roster\n",
+                     without_number);
+    ImportTable t;
+    t.lead = {"Email address"};
+    if (numbers) t.lead.push_back("ID number");
+    t.columns = labs;
+    if (total) t.columns.push_back("Total");
+    for (size_t i : kept) {
+        const RosterStudent& st = roster.students[i];
+        ImportTable::Row r;
+        r.lead = {st.email};
+        if (numbers) r.lead.push_back(st.id_number);
+        r.values = lab_cells(rows[match.of_student[i].who.row], labs, total);
+        r.who = roster_who(st);
+        t.rows.push_back(std::move(r));
+    }
+    return t;
+}
+
+// DIR/moodle_items.csv: the grade item to make for each column of
+// moodle.csv, with its maximum; the same on stderr, and where a maximum is
+// above 100, what Moodle's import needs for it.
+void write_moodle_items(const fs::path& out, const std::vector<std::string>& labs, bool total,
+                        const std::map<std::string, double>& max) {
+    std::string text = line_of({"grade item", "maximum grade"});
+    std::vector<std::string> said, above;
+    double sum = 0;
+    bool known = true;
+    const auto item = [&](const std::string& name, std::optional<double> m) {
+        text += line_of({name, m ? points(*m) : ""});
+        said.push_back(name + " " + (m ? points(*m) : "?"));
+        if (m && *m > 100) above.push_back(name + " (" + points(*m) + ")");
+    };
+    for (const std::string& id : labs) {
+        const auto m = max.find(id);
+        known = known && m != max.end();
+        if (m != max.end()) sum += m->second;
+        item(id, m == max.end() ? std::nullopt : std::optional<double>(m->second));
+    }
+    if (total) item("Total", known ? std::optional<double>(sum) : std::nullopt);
+    write_whole(out / "moodle_items.csv", text);
+    std::fprintf(stderr,
+                 "grade-class: moodle.csv: before importing, give each column a grade item with "
+                 "its maximum (Gradebook setup > Add grade item, Maximum grade): %s "
+                 "(moodle_items.csv); a grade item the import makes is out of 100\n",
+                 fw::join(said, ", ").c_str());
+    if (!above.empty())
+        std::fprintf(stderr,
+                     "grade-class: moodle.csv: Moodle's import refuses the whole file for a "
+                     "grade above 100 unless the site allows it (Site administration > Grades "
+                     "> General settings: Unlimited grades, and Grade point maximum at least "
+                     "the points): %s\n",
+                     fw::join(above, ", ").c_str());
+}
+
+// roster_match.csv, for the staff: each roster student's submission, how it
+// was found and which labs were not graded, then the submissions' students
+// no roster row names. Each line is said on stderr too.
 std::string roster_match_text(const Roster& roster, const RosterMatch& match,
-                              const std::vector<ClassRow>& rows) {
-    std::string text = line_of({"Student", "ID", "SIS User ID", "SIS Login ID", "submission",
-                                "submitted by", "matched by"});
+                              const std::vector<ClassRow>& rows,
+                              const std::vector<std::string>& labs) {
+    const bool canvas = roster.kind == Roster::Kind::canvas;
+    const std::string none = canvas ? "no submission: 0 in canvas.csv" : "no submission";
+    std::string text = line_of({"Student", "ID", canvas ? "SIS User ID" : "ID number",
+                                canvas ? "SIS Login ID" : "Email address", "submission",
+                                "submitted by", "matched by", "not graded"});
     for (size_t i = 0; i < roster.students.size(); ++i) {
         const RosterStudent& st = roster.students[i];
         const RosterMatch::Found& f = match.of_student[i];
         std::vector<std::string> fields = {st.name, st.id, st.sis_user_id, st.sis_login_id};
         if (f.matched) {
-            fields.insert(fields.end(),
-                          {rows[f.who.row].submission.key, who_text(rows, f.who), f.by});
+            std::vector<std::string> not_graded;
+            for (const std::string& id : labs)
+                if (!lab_score(rows[f.who.row], id)) not_graded.push_back(id);
+            fields.insert(fields.end(), {rows[f.who.row].submission.key, who_text(rows, f.who),
+                                         f.by, fw::join(not_graded, " ")});
         } else {
-            fields.insert(fields.end(), {"", "", "no submission: 0 in canvas.csv"});
-            std::fprintf(
-                stderr, "grade-class: no submission from %s (ID %s%s): 0 in canvas.csv\n",
-                st.name.c_str(), st.id.c_str(),
-                st.sis_login_id.empty() ? "" : (", SIS Login ID " + st.sis_login_id).c_str());
+            fields.insert(fields.end(), {"", "", none, ""});
+            std::fprintf(stderr, "grade-class: no submission from %s%s%s\n", roster_who(st).c_str(),
+                         st.id.empty() ? "" : (" ID " + st.id).c_str(),
+                         canvas ? ": 0 in canvas.csv" : "");
         }
         text += line_of(fields, csv_field);
     }
     for (const SubmissionStudent& s : match.not_on_roster) {
         const std::string who = s.student < 0 ? "" : " (" + who_text(rows, s) + ")";
-        std::fprintf(stderr,
-                     "grade-class: submission %s%s is on no row of the roster: not in "
-                     "canvas.csv\n",
-                     rows[s.row].submission.key.c_str(), who.c_str());
-        text += line_of(
-            {"", "", "", "", rows[s.row].submission.key, who_text(rows, s), "not on the roster"},
-            csv_field);
+        std::fprintf(stderr, "grade-class: submission %s%s is on no row of the roster%s\n",
+                     rows[s.row].submission.key.c_str(), who.c_str(),
+                     canvas ? ": not in canvas.csv" : "");
+        text += line_of({"", "", "", "", rows[s.row].submission.key, who_text(rows, s),
+                         "not on the roster", ""},
+                        csv_field);
     }
     for (const std::string& a : match.ambiguous)
         std::fprintf(stderr, "grade-class: roster: %s, so none of them was matched by it\n",
@@ -264,20 +442,41 @@ std::string roster_match_text(const Roster& roster, const RosterMatch& match,
     return text;
 }
 
+// A number as Canvas's import reads a cell (lib/gradebook_importer.rb, the
+// decimal_comma_to_period converter: the last ',' or '.' is the decimal
+// point, the others are dropped); none for another text.
+std::optional<double> canvas_number(const std::string& cell) {
+    static const std::regex number(R"(-?[0-9.,]+)");
+    if (!std::regex_match(cell, number)) return std::nullopt;
+    const size_t point = cell.find_last_of(".,");
+    std::string digits;
+    for (size_t i = 0; i < cell.size(); ++i)
+        if (i == point)
+            digits += '.';
+        else if (cell[i] != '.' && cell[i] != ',')
+            digits += cell[i];
+    try {
+        return std::stod(digits);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
 // canvas.csv: the roster's student columns as Canvas wrote them, so that
 // its importer finds each student by ID (then SIS User ID, SIS Login ID,
 // name); the Points Possible row; then each roster student's points, 0 for
-// one with no submission, none for a lab not graded.
-std::string canvas_text(const Roster& roster, const RosterMatch& match,
-                        const std::vector<LmsExport::Column>& columns,
-                        const std::vector<ClassRow>& rows) {
-    const std::map<std::string, double> max = lab_maxima(rows);
-    std::vector<std::string> head(roster.header.begin(),
-                                  roster.header.begin() + long(roster.info_columns));
-    std::vector<std::string> possible(roster.info_columns, "");
-    possible[0] = "Points Possible";
+// one with no submission, none for a lab not graded (write_split leaves
+// that cell out of the file).
+ImportTable canvas_table(const Roster& roster, const RosterMatch& match,
+                         const std::vector<LmsExport::Column>& columns,
+                         const std::vector<ClassRow>& rows,
+                         const std::map<std::string, double>& max) {
+    ImportTable t;
+    t.lead.assign(roster.header.begin(), roster.header.begin() + long(roster.info_columns));
+    t.possible_lead.assign(roster.info_columns, "");
+    t.possible_lead[0] = "Points Possible";
     for (const LmsExport::Column& col : columns) {
-        head.push_back(col.header);
+        t.columns.push_back(col.header);
         double sum = 0;
         bool known = true;
         for (const std::string& lab : col.labs) {
@@ -285,24 +484,50 @@ std::string canvas_text(const Roster& roster, const RosterMatch& match,
             known = known && m != max.end() && m->second > 0;
             if (m != max.end()) sum += m->second;
         }
-        possible.push_back(known ? points(sum) : "");
-        if (!known)
+        t.possible.push_back(known ? points(sum) : "");
+        if (!known) {
             std::fprintf(stderr,
                          "grade-class: canvas.csv: no submission was graded in every lab of "
                          "'%s', so its Points Possible is left blank\n",
                          col.header.c_str());
+            continue;
+        }
+        // Canvas's import sets Points Possible only on an assignment it
+        // creates (process_pp; an existing one keeps its own), so the
+        // roster's is the maximum the points are read against.
+        const auto at = std::find(roster.header.begin(), roster.header.end(), col.header);
+        const size_t j = size_t(at - roster.header.begin());
+        const std::optional<double> theirs = j < roster.points_possible.size()
+                                                 ? canvas_number(roster.points_possible[j])
+                                                 : std::nullopt;
+        if (at != roster.header.end() && theirs && std::abs(*theirs - sum) >= 0.005)
+            std::fprintf(stderr,
+                         "grade-class: warning: canvas.csv: column '%s': the labs are out of %s "
+                         "points, but the roster's Points Possible for it is %s, which Canvas "
+                         "keeps: full marks would show as %s/%s; set the assignment's points to "
+                         "%s in Canvas before importing\n",
+                         col.header.c_str(), points(sum).c_str(), points(*theirs).c_str(),
+                         points(sum).c_str(), points(*theirs).c_str(), points(sum).c_str());
     }
-    std::string text = line_of(head) + line_of(possible);
     for (size_t i = 0; i < roster.students.size(); ++i) {
         const RosterMatch::Found& f = match.of_student[i];
-        std::vector<std::string> fields = roster.students[i].info;
+        ImportTable::Row r;
+        r.lead = roster.students[i].info;
+        r.who = roster_who(roster.students[i]);
         for (const LmsExport::Column& col : columns) {
             const std::optional<double> v = f.matched ? sum_score(rows[f.who.row], col.labs) : 0.0;
-            fields.push_back(v ? points(*v) : "");
+            r.values.push_back(v ? std::optional<std::string>(points(*v)) : std::nullopt);
         }
-        text += line_of(fields);
+        t.rows.push_back(std::move(r));
     }
-    return text;
+    return t;
+}
+
+void remove_all_stale(const fs::path& out, const std::vector<std::string>& bases) {
+    for (const std::string& base : bases) {
+        remove_stale(out / (base + ".csv"));
+        remove_stale_parts(out, base, 2);
+    }
 }
 
 }  // namespace
@@ -317,48 +542,52 @@ void LmsExport::write(const fs::path& out, const std::vector<ClassRow>& rows,
                      "grade-class: %zu labs of submissions were not graded (grades.csv says "
                      "why): no score for them in canvas.csv and moodle.csv\n",
                      not_graded);
-
-    std::optional<RosterMatch> match;
-    std::map<std::pair<size_t, int>, std::string> roster_email;
-    if (has_roster_) {
-        match = match_roster(roster_, rows);
-        for (size_t i = 0; i < match->of_student.size(); ++i) {
-            const RosterMatch::Found& f = match->of_student[i];
-            if (f.matched && is_email(roster_.students[i].sis_login_id))
-                roster_email[{f.who.row, f.who.student}] = roster_.students[i].sis_login_id;
-        }
+    if (!has_roster_) {
+        remove_all_stale(out, {"canvas", "moodle", "moodle_items", "roster_match"});
+        std::fprintf(stderr,
+                     "grade-class: no canvas.csv nor moodle.csv: each names a student by the "
+                     "identifiers of the gradebook's own export; give Canvas's or Moodle's with "
+                     "--roster\n");
+        return;
     }
+    const RosterMatch match = match_roster(roster_, rows);
+    const std::map<std::string, double> max = lab_maxima(rows);
     std::vector<std::string> ids, no_email;
     for (const auto& [id, dir] : labs_) ids.push_back(id);
-    write_whole(out / "moodle.csv", moodle_text(rows, ids, roster_email, no_email));
+    write_split(out, "moodle", moodle_table(roster_, match, rows, ids, moodle_total_, no_email));
+    write_moodle_items(out, ids, moodle_total_, max);
     if (!no_email.empty()) {
         const std::vector<std::string> some(
             no_email.begin(), no_email.begin() + long(std::min<size_t>(no_email.size(), 5)));
         std::fprintf(stderr,
-                     "grade-class: moodle.csv leaves out %zu submission students with no email "
-                     "address (%s%s)\n",
+                     "grade-class: moodle.csv leaves out %zu students with no email address on "
+                     "the roster (%s%s)\n",
                      no_email.size(), fw::join(some, ", ").c_str(),
                      no_email.size() > some.size() ? ", ..." : "");
     }
 
-    if (!has_roster_ || !partial.empty()) {
-        remove_stale(out / "canvas.csv");
-        remove_stale(out / "roster_match.csv");
-        if (!has_roster_)
+    const bool canvas = roster_.kind == Roster::Kind::canvas;
+    if (!partial.empty() || !canvas) {
+        remove_all_stale(out, {"canvas"});
+        if (!canvas)
             std::fprintf(stderr,
-                         "grade-class: no canvas.csv: Canvas's import names each student by "
-                         "the IDs of its own gradebook export; give that file with --roster\n");
+                         "grade-class: no canvas.csv: the roster is Moodle's export, and "
+                         "Canvas's import names each student by the IDs of its own\n");
         else
             std::fprintf(stderr,
                          "grade-class: no canvas.csv: %s, and the roster's other students "
                          "would get 0\n",
                          partial.c_str());
+    }
+    if (!partial.empty()) {
+        remove_all_stale(out, {"roster_match"});
         return;
     }
-    write_whole(out / "roster_match.csv", roster_match_text(roster_, *match, rows));
-    write_whole(out / "canvas.csv", canvas_text(roster_, *match, columns_, rows));
+    write_whole(out / "roster_match.csv", roster_match_text(roster_, match, rows, ids));
+    if (!canvas) return;
+    write_split(out, "canvas", canvas_table(roster_, match, columns_, rows, max));
     const size_t found =
-        size_t(std::count_if(match->of_student.begin(), match->of_student.end(),
+        size_t(std::count_if(match.of_student.begin(), match.of_student.end(),
                              [](const RosterMatch::Found& f) { return f.matched; }));
     std::fprintf(stderr,
                  "grade-class: canvas.csv: %zu students on the roster, %zu with a submission, "

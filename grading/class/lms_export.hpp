@@ -1,13 +1,19 @@
 // The class's grades as Canvas's and Moodle's gradebooks import them
-// (docs/contract.md, `course grade-class`, Canvas and Moodle):
-// - DIR/canvas.csv, from the roster Canvas's gradebook exports (--roster):
-//   its student columns as they are, an assignment column per lab (or one
-//   for the total, --canvas-column), the Points Possible row, and a row per
-//   student on the roster, 0 for one with no submission;
+// (docs/contract.md, `course grade-class`, Canvas and Moodle), from the
+// roster, Canvas's or Moodle's own gradebook export (--roster):
+// - DIR/canvas.csv (Canvas's roster only): its student columns as they
+//   are, an assignment column per lab (or one for the total,
+//   --canvas-column), the Points Possible row, and a row per student on the
+//   roster, 0 for one with no submission;
+// - DIR/moodle.csv: the roster's Email address (and ID number, where it has
+//   one) of each student with a submission, then a column per lab (and the
+//   total, --moodle-total); DIR/moodle_items.csv: each column's maximum;
 // - DIR/roster_match.csv: which submission each roster student was matched
-//   to and how, and the submissions with no roster row;
-// - DIR/moodle.csv: an email address column for Moodle's "Identify user by",
-//   then a column per lab and the total.
+//   to and how, and the submissions with no roster row.
+// No file has a blank cell: a student with a lab not graded is left out of
+// canvas.csv (moodle.csv), and canvas_2.csv (moodle_2.csv), ... hold the
+// columns such students have, since both imports take a blank cell for "no
+// grade" and erase the grade they have.
 // The roster is read and matched in roster.hpp.
 #pragma once
 
@@ -27,6 +33,7 @@ struct LmsOptions {
     // NAME. A NAME that is the title of one of the roster's assignments
     // ("Title (id)") is written as that column's header.
     std::vector<std::string> canvas_columns;
+    bool moodle_total = false;  // moodle.csv has a Total column
 };
 
 // Reads the roster and checks the column names when made, before anything
@@ -36,10 +43,12 @@ public:
     LmsExport(const LmsOptions& options,
               const std::vector<std::pair<std::string, std::string>>& labs);
 
-    // Writes DIR/moodle.csv, and with a roster DIR/canvas.csv and
-    // DIR/roster_match.csv, saying on stderr who has no submission and which
-    // submissions are not on the roster. `partial`: why `rows` are not the
-    // whole class ("" when they are), which leaves canvas.csv out.
+    // With a roster, writes DIR/moodle.csv and DIR/moodle_items.csv, and
+    // DIR/canvas.csv and DIR/roster_match.csv, saying on stderr who has no
+    // submission, which submissions are not on the roster and where a
+    // maximum differs from Canvas's Points Possible. `partial`: why `rows`
+    // are not the whole class ("" when they are), which leaves canvas.csv
+    // and roster_match.csv out.
     void write(const std::filesystem::path& out, const std::vector<ClassRow>& rows,
                const std::string& partial) const;
 
@@ -52,6 +61,7 @@ public:
 
 private:
     std::vector<std::pair<std::string, std::string>> labs_;
+    bool moodle_total_ = false;
     bool has_roster_ = false;
     Roster roster_;
     std::vector<Column> columns_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 
@@ -75,20 +76,54 @@ std::vector<std::vector<std::string>> read_records(const fs::path& file, const s
     return parse_csv(text, semicolons ? ';' : ',', what);
 }
 
-// How many student columns Canvas's header has, Student to Section.
-size_t student_columns(const std::vector<std::string>& h, const std::string& what) {
-    const auto section =
-        std::find(h.begin() + std::min<long>(2, long(h.size())), h.end(), "Section");
-    if (h.size() >= 3 && h[0] == "Student" && h[1] == "ID" && section != h.end())
-        return size_t(section - h.begin()) + 1;
-    const std::vector<std::string> found(h.begin(),
-                                         h.begin() + long(std::min<size_t>(h.size(), 6)));
-    throw fw::UsageError(
-        what +
-        ": its first row is not the header of Canvas's gradebook export (Grades > Export): "
-        "expected Student, ID, [SIS User ID,] [SIS Login ID,] Section, then the "
-        "assignments; found " +
-        fw::join(found, ", ") + (h.size() > 6 ? ", ..." : ""));
+bool holds(const std::vector<std::string>& h, size_t i, const char* text) {
+    return i < h.size() && h[i].find(text) != std::string::npos;
+}
+
+bool holds(const std::vector<std::string>& h, size_t i, const std::regex& re) {
+    return i < h.size() && std::regex_search(h[i], re);
+}
+
+// Where Canvas's import finds a student's details in a header of its
+// export (lib/gradebook_importer.rb, row_has_student_headers? and
+// update_column_count): the name in one column ("Student") or two
+// ("LastName", "FirstName"), then "ID", then either "SIS Login ID" or "SIS
+// User ID", "SIS Login ID", ["Integration ID",] ["Root Account"], and the
+// column after them must be "Section" (header? refuses the file otherwise).
+// Custom columns follow Section, before the assignments.
+struct CanvasLayout {
+    bool last_first = false;
+    size_t id = 1;
+    long sis_user = -1, sis_login = -1;
+    size_t info_columns = 0;  // Student to Section
+};
+
+std::optional<CanvasLayout> canvas_layout(const std::vector<std::string>& h) {
+    static const std::regex login(R"(SIS\s+Login\s+ID)"), user(R"(SIS\s+User\s+ID)"),
+        integration(R"(Integration\s+ID)"), root(R"(Root\s+Account)");
+    CanvasLayout l;
+    l.last_first = h.size() > 2 && h[0] == "LastName" && h[1] == "FirstName";
+    if (!l.last_first && !(holds(h, 0, "Student") && holds(h, 1, "ID"))) return std::nullopt;
+    if (l.last_first && !holds(h, 2, "ID")) return std::nullopt;
+    const size_t n = l.last_first ? 4 : 3;
+    l.id = n - 2;
+    l.info_columns = n;
+    if (holds(h, n - 1, login)) {
+        l.sis_login = long(n - 1);
+        l.info_columns += 1;
+    } else if (holds(h, n - 1, user) && holds(h, n, login)) {
+        const size_t i = holds(h, n + 1, integration) ? 1 : 0;
+        l.sis_user = long(n - 1);
+        l.sis_login = long(n);
+        l.info_columns += 2 + i + (holds(h, n + 1 + i, root) ? 1 : 0);
+    }
+    if (!holds(h, l.info_columns - 1, "Section")) return std::nullopt;
+    return l;
+}
+
+std::string first_cells(const std::vector<std::string>& h, size_t n) {
+    const std::vector<std::string> some(h.begin(), h.begin() + long(std::min(h.size(), n)));
+    return fw::join(some, ", ") + (h.size() > n ? ", ..." : "");
 }
 
 // The rows that describe the assignments rather than a student: their
@@ -198,7 +233,87 @@ std::vector<std::vector<std::string>> parse_csv(const std::string& text, char de
     return std::move(r.done);
 }
 
-Roster read_canvas_roster(const fs::path& file) {
+namespace {
+
+// A row's field, blank where the row is short.
+std::string cell(const std::vector<std::string>& row, long i) {
+    return i >= 0 && size_t(i) < row.size() ? trim(row[size_t(i)]) : "";
+}
+
+bool is_email(const std::string& s) {
+    const size_t at = s.find('@');
+    return at != std::string::npos && at > 0 && at + 1 < s.size() &&
+           s.find_first_of(" \t,;") == std::string::npos;
+}
+
+bool blank_row(const std::vector<std::string>& row) {
+    return std::all_of(row.begin(), row.end(),
+                       [](const std::string& c) { return trim(c).empty(); });
+}
+
+// Two students of one identifier are an error: Canvas and Moodle would give
+// both the grades of one.
+void check_unique(std::map<std::string, size_t>& seen, const std::string& value, size_t line,
+                  const std::string& column, const std::string& what) {
+    if (value.empty()) return;
+    const auto [it, fresh] = seen.emplace(normal(value), line);
+    if (!fresh)
+        throw fw::UsageError(what + ": rows " + std::to_string(it->second) + " and " +
+                             std::to_string(line) + " have the same " + column + ", " + value);
+}
+
+void read_canvas(Roster& roster, const CanvasLayout& l,
+                 const std::vector<std::vector<std::string>>& records, const std::string& what) {
+    roster.info_columns = l.info_columns;
+    std::map<std::string, size_t> row_of_id;
+    for (size_t i = 1; i < records.size(); ++i) {
+        const std::vector<std::string>& row = records[i];
+        if (!row.empty() && trim(row[0]).find("Points Possible") != std::string::npos)
+            for (const std::string& c : row) roster.points_possible.push_back(trim(c));
+        if (describes_assignments(row)) continue;
+        RosterStudent s;
+        for (size_t c = 0; c < l.info_columns; ++c) s.info.push_back(c < row.size() ? row[c] : "");
+        // Canvas's import names a LastName, FirstName student "First Last";
+        // "Last, First" is its sortable name, which it matches too.
+        s.name = l.last_first ? cell(row, 0) + ", " + cell(row, 1) : cell(row, 0);
+        s.id = cell(row, long(l.id));
+        s.sis_user_id = cell(row, l.sis_user);
+        s.sis_login_id = cell(row, l.sis_login);
+        if (is_email(s.sis_login_id)) s.email = s.sis_login_id;
+        check_unique(row_of_id, s.id, i + 1, "ID", what);
+        roster.students.push_back(std::move(s));
+    }
+}
+
+void read_moodle(Roster& roster, const std::vector<std::vector<std::string>>& records,
+                 const std::string& what) {
+    roster.kind = Roster::Kind::moodle;
+    const std::vector<std::string>& h = roster.header;
+    const auto column = [&](const char* name) -> long {
+        const auto it = std::find(h.begin(), h.end(), name);
+        return it == h.end() ? -1 : long(it - h.begin());
+    };
+    const long first = column("First name"), last = column("Last name"),
+               email = column("Email address"), id_number = column("ID number");
+    roster.has_id_number = id_number >= 0;
+    std::map<std::string, size_t> row_of_email, row_of_number;
+    for (size_t i = 1; i < records.size(); ++i) {
+        const std::vector<std::string>& row = records[i];
+        if (blank_row(row)) continue;
+        RosterStudent s;
+        const std::string f = cell(row, first), l = cell(row, last);
+        s.name = !f.empty() && !l.empty() ? l + ", " + f : f + l;
+        s.email = s.sis_login_id = cell(row, email);
+        s.id_number = s.sis_user_id = cell(row, id_number);
+        check_unique(row_of_email, s.email, i + 1, "Email address", what);
+        check_unique(row_of_number, s.id_number, i + 1, "ID number", what);
+        roster.students.push_back(std::move(s));
+    }
+}
+
+}  // namespace
+
+Roster read_roster(const fs::path& file) {
     const std::string what = "--roster '" + file.string() + "'";
     const std::vector<std::vector<std::string>> records = read_records(file, what);
     if (records.empty()) throw fw::UsageError(what + ": the file is empty");
@@ -206,29 +321,27 @@ Roster read_canvas_roster(const fs::path& file) {
     roster.file = file.string();
     for (const std::string& h : records[0]) roster.header.push_back(trim(h));
     const std::vector<std::string>& h = roster.header;
-    roster.info_columns = student_columns(h, what);
-    const auto column = [&](const char* name) -> long {
-        const auto end = h.begin() + long(roster.info_columns);
-        const auto it = std::find(h.begin() + 2, end, name);
-        return it == end ? -1 : long(it - h.begin());
-    };
-    const long sis_user = column("SIS User ID"), sis_login = column("SIS Login ID");
-    std::map<std::string, size_t> row_of_id;
-    for (size_t i = 1; i < records.size(); ++i) {
-        if (describes_assignments(records[i])) continue;
-        std::vector<std::string> row = records[i];
-        row.resize(std::max(row.size(), h.size()));
-        RosterStudent s;
-        s.info.assign(row.begin(), row.begin() + long(roster.info_columns));
-        s.name = trim(row[0]);
-        s.id = trim(row[1]);
-        if (sis_user >= 0) s.sis_user_id = trim(row[size_t(sis_user)]);
-        if (sis_login >= 0) s.sis_login_id = trim(row[size_t(sis_login)]);
-        const auto [it, fresh] = row_of_id.emplace(s.id, i + 1);
-        if (!s.id.empty() && !fresh)
-            throw fw::UsageError(what + ": rows " + std::to_string(it->second) + " and " +
-                                 std::to_string(i + 1) + " have the same ID, " + s.id);
-        roster.students.push_back(std::move(s));
+    const bool canvas_like = holds(h, 0, "Student") || holds(h, 0, "LastName");
+    if (const std::optional<CanvasLayout> l = canvas_layout(h)) {
+        read_canvas(roster, *l, records, what);
+    } else if (canvas_like) {
+        throw fw::UsageError(
+            what +
+            ": Canvas's import would refuse a file with this header (\"Invalid header row\"): "
+            "it takes Student (or LastName, FirstName), ID, then SIS Login ID, or SIS User ID, "
+            "SIS Login ID[, Integration ID][, Root Account], then Section, in that order, as "
+            "Canvas's gradebook export (Grades > Export) writes them; found " +
+            first_cells(h, 8));
+    } else if (std::find(h.begin(), h.end(), "Email address") != h.end()) {
+        read_moodle(roster, records, what);
+    } else {
+        throw fw::UsageError(
+            what +
+            ": its first row is the header of neither Canvas's gradebook export (Grades > "
+            "Export: Student, ID, [SIS User ID,] SIS Login ID, Section, then the assignments) "
+            "nor Moodle's grade export (Export > Plain text file: First name, Last name, ID "
+            "number, ..., Email address, then the grade items); found " +
+            first_cells(h, 6));
     }
     if (roster.students.empty()) throw fw::UsageError(what + ": no students in it");
     return roster;

@@ -19,26 +19,43 @@ namespace grading::cls {
 std::vector<std::vector<std::string>> parse_csv(const std::string& text, char delimiter,
                                                 const std::string& what);
 
-// One student of Canvas's gradebook export.
+// One student of the roster.
 struct RosterStudent {
-    std::vector<std::string> info;  // the student columns, Student to Section, as read
+    std::vector<std::string> info;  // Canvas's student columns, Student to Section, as read
+    // Canvas's Student ("Last, First"; from LastName and FirstName where the
+    // export has those), ID, SIS User ID, SIS Login ID. From Moodle's export:
+    // "Last name, First name", no ID, ID number as SIS User ID, Email
+    // address as SIS Login ID.
     std::string name, id, sis_user_id, sis_login_id;
+    // What moodle.csv identifies the student by: the Email address (Canvas:
+    // the SIS Login ID where it is an email address), the ID number (Moodle's
+    // export only).
+    std::string email, id_number;
 };
 
-// Canvas's gradebook export (Grades > Export): a header row "Student", "ID",
-// ["SIS User ID",] ["SIS Login ID",] [others,] "Section", then assignment
-// columns ("Title (id)") and read-only totals; a "Points Possible" row, and
-// a "Muted" or "Manual Posting" row, before the students.
+// Canvas's gradebook export (Grades > Export), its header as Canvas's import
+// (lib/gradebook_importer.rb, update_column_count) takes it: "Student" or
+// "LastName", "FirstName"; "ID"; then "SIS Login ID", or "SIS User ID",
+// "SIS Login ID", ["Integration ID",] ["Root Account"]; then "Section"; then
+// custom columns, assignments ("Title (id)") and read-only totals. A "Points
+// Possible" row, and a "Muted" or "Manual Posting" row, before the students.
+// Or Moodle's grade export (Grades > Export > Plain text file): "First
+// name", "Last name", ["ID number",] ..., "Email address", then grade items.
 struct Roster {
+    enum class Kind { canvas, moodle };
+    Kind kind = Kind::canvas;
     std::string file;
     std::vector<std::string> header;
-    size_t info_columns = 0;  // Student to Section
+    size_t info_columns = 0;                   // Canvas: Student to Section
+    std::vector<std::string> points_possible;  // Canvas: the Points Possible row, as read
+    bool has_id_number = false;                // Moodle: an ID number column
     std::vector<RosterStudent> students;
 };
 
 // Throws fw::UsageError naming the file and what is wrong: unreadable, not
-// CSV, or no header of Canvas's form.
-Roster read_canvas_roster(const std::filesystem::path& file);
+// CSV, or a header of neither form; a Canvas header that Canvas's own import
+// refuses ("Invalid header row") is refused with that reason.
+Roster read_roster(const std::filesystem::path& file);
 
 // A submission's student: the row's students[student], or the submission
 // alone (student -1) where the layout names none.
