@@ -17,6 +17,7 @@
 #include "grading/judge/solution_blocks.hpp"
 #include "grading/judge/starting_code.hpp"
 #include "grading/run/child.hpp"
+#include "grading/units/reference.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -105,6 +106,28 @@ bool has(const std::string& text, const std::string& part) {
 
 // back_to_front()'s results for every unit case of sorting_order, sorting by
 // z (the most negative first) instead of by distance from the eye.
+size_t checkpoint_index(const grading::LabData& lab, const std::string& name) {
+    for (size_t k = 0; k < lab.file.checkpoints.size(); ++k)
+        if (lab.file.checkpoints[k].name == name) return k;
+    FAIL("no checkpoint " << name);
+    return 0;
+}
+
+// The units.json of a child whose every unit function is the course's own:
+// each case's result from its reference.
+std::string solution_units(const grading::LabData& lab) {
+    const grading::LabPlan plan = grading::plan_lab(lab, 7, grading::PlanFor::Grading);
+    json units = json::object();
+    for (const grading::UnitPlan& u : plan.units) {
+        const grading::UnitCheck& check =
+            lab.checks[checkpoint_index(lab, u.checkpoint)][u.check].as<grading::UnitCheck>();
+        const grading::ReferenceUnit& ref = grading::find_reference(lab.id, check.function);
+        for (const grading::UnitCase& c : u.cases)
+            units[c.id] = {{"result", ref.function.call(c.args)}};
+    }
+    return units.dump();
+}
+
 std::string by_z_units(const grading::LabData& lab) {
     const grading::LabPlan plan = grading::plan_lab(lab, 7, grading::PlanFor::Grading);
     json units = json::object();
@@ -238,8 +261,10 @@ TEST_CASE("a failed checkpoint whose part is starting code says so, and names no
     grading::LabData lab = lab_named("framebuffer-ops");
     // back_to_front() unwritten keeps the listed order: sorting_sorted draws
     // sorting_no_depth_write's frame.
+    // (Its unit checks pass: a failing one would be the likelier cause.)
     const std::vector<std::pair<std::string, std::string>> files = {
-        {"sorting_sorted.pam", frame_of(lab, "sorting_no_depth_write")}};
+        {"sorting_sorted.pam", frame_of(lab, "sorting_no_depth_write")},
+        {"units.json", solution_units(lab)}};
     const std::string staff = all_words(judged(lab, "sorting_sorted", files));
     CHECK_MESSAGE(has(staff, "your code most likely treats sorted true as false"), staff);
     lab.sources = sources_with("starting-judged", kBlending, back_to_front_unwritten());

@@ -23,6 +23,7 @@ Grade graded_with(const std::string& lab, const std::string& file, const std::st
                   const std::string& replace, const std::string& name) {
     const fs::path dir = fs::path(fw::test::out_dir()) / name;
     fs::remove_all(dir);
+    fs::create_directories(dir);
     fs::copy(fs::path(fw::test::source_dir()) / "shaders", dir / "shaders",
              fs::copy_options::recursive);
     const fs::path target = dir / "shaders" / file;
