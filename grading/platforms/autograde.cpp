@@ -3,9 +3,11 @@
 // root. It puts the submitted files in place of those in the course's tree,
 // rebuilds `lab`, grades it with `course grade` and copies the results to
 // results/results.json. Whatever the submission does, it leaves a complete
-// results.json: for Gradescope, a submission that does not build, or a
-// grader that fails, scores 0 on every check with the reason in the output;
-// for PrairieLearn it is not gradable, with the reason.
+// results.json: for Gradescope, a lab whose C++ does not compile scores 0
+// on its own checks, the others built with its starting code; a submission
+// that does not build even so, or a grader that fails, scores 0 on every
+// check with the reason in the output; for PrairieLearn a submission that
+// does not build is not gradable, with the reason.
 #include <fcntl.h>
 #include <pwd.h>
 #include <sys/stat.h>
