@@ -213,8 +213,8 @@ private:
                 report::write_text_file(log.string(), said->second);
                 if (row_.first_error.empty()) row_.first_error = first_error(said->second);
                 not_built(id,
-                          "this lab's C++ does not compile (the compiler's message is below); "
-                          "the other labs were graded with its starting code",
+                          "this lab does not build: its C++ does not compile (the compiler's "
+                          "message is below); the other labs were graded with its starting code",
                           log, first_error(said->second));
             }
             return true;
