@@ -93,6 +93,9 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
         ->add_option("--memory", g.memory_mib,
                      "MiB of memory per lab, where a cgroup enforces it (default 2048)")
         ->check(CLI::Range(64, 65536));
+    grade->add_option("--not-built", g.not_built,
+                      "A JSON file of labs whose C++ did not compile (course autograde): lab "
+                      "folder -> the compiler's output; they fail every check, unrun");
     return {grade, [&g] { return grading::grade_command(g); }};
 }
 

@@ -3,21 +3,29 @@
 // commands, -Werror left out), and the course's objects for every other file
 // are linked with them (the build's own link command). An object is kept by
 // the hash of its command and text, so a file many students left as the
-// release wrote it, or handed in alike, is compiled once.
+// release wrote it, or handed in alike, is compiled once. A lab whose file
+// does not compile has every C++ file of it linked at its starting code, and
+// is that lab's failure alone (grading/platforms/compile_units.hpp).
 #pragma once
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+
+#include "grading/platforms/compile_units.hpp"
 
 namespace grading::cls {
 
 struct BuiltLab {
-    bool ok = false;
+    bool ok = false;          // `lab` was linked
     std::string log;          // the compilers' and the linker's output
     std::string first_error;  // its first line with "error" or "fatal", for the class page
-    int compiled = 0;         // files compiled (not found among the kept objects)
-    double cpu_seconds = 0;   // of the compilers and the linker
+    // The labs, by folder, whose C++ files did not all compile, each with
+    // what the compiler said of them: linked at their starting code.
+    std::map<std::string, std::string> not_built;
+    int compiled = 0;        // files compiled (not found among the kept objects)
+    double cpu_seconds = 0;  // of the compilers and the linker
 };
 
 class LabBuilder {
@@ -30,18 +38,25 @@ public:
 
     // Builds `out` with `cpp` (a repository path such as
     // "labs/07_framebuffer_ops/blending.cpp" to the file that stands for it)
-    // in place of those files; `work` is a folder of its own for the sources.
+    // in place of those files; where a lab's file does not compile, each C++
+    // file of that lab is its starting version, `versions`/PATH, instead.
+    // `work` is a folder of its own for the sources.
     BuiltLab build(const std::map<std::string, std::filesystem::path>& cpp,
-                   const std::filesystem::path& work, const std::filesystem::path& out) const;
+                   const std::filesystem::path& versions, const std::filesystem::path& work,
+                   const std::filesystem::path& out) const;
 
     // The repository paths of the C++ files build() can put in place.
-    bool knows(const std::string& rel) const { return units_.count(rel) > 0; }
+    bool knows(const std::string& rel) const { return commands_->knows(rel); }
 
 private:
-    struct Unit {
-        std::string directory, command, object, source;
-    };
-    std::map<std::string, Unit> units_;  // by repository path
+    // The object for `rel` compiled from the file `from` ("" when it is the
+    // course's own); nullopt when it does not compile. The compiler's output
+    // goes to `log`.
+    std::optional<std::string> object_of(const std::string& rel, const std::filesystem::path& from,
+                                         const std::filesystem::path& work,
+                                         const std::filesystem::path& log, BuiltLab& b) const;
+
+    std::optional<CompileCommands> commands_;
     std::string link_dir_, link_command_, link_output_;
     std::filesystem::path objects_;
     std::string root_;

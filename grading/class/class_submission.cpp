@@ -134,7 +134,8 @@ private:
             return;
         }
         if (!build()) return;
-        for (const std::string& id : pending) grade_lab(id);
+        for (const std::string& id : pending)
+            if (!row_.labs.count(id)) grade_lab(id);
     }
 
     // Chooses each student file as the autograders do, and notes what is
@@ -186,32 +187,56 @@ private:
             const json j = json::parse(read_file(kept));
             if (j.at("hash") != hashes_[id]) return false;
             const LabGrade& g = row_.labs[id] = lab_grade_of(j);
-            if (g.status == "not built") row_.first_error = j.value("first_error", "");
+            if (g.status == "not built" && row_.first_error.empty())
+                row_.first_error = j.value("first_error", "");
             return true;
         } catch (const std::exception&) {
             return false;
         }
     }
 
+    // Builds `lab`; a lab whose C++ does not compile is not built, the
+    // others are graded with its starting code. False when `lab` was not
+    // linked: then no lab is graded.
     bool build() {
         std::map<std::string, fs::path> cpp;
         for (const auto& [rel, from] : chosen_)
             if (fs::path(rel).extension() == ".cpp" && c_.builder->knows(rel)) cpp[rel] = from;
-        const BuiltLab b = c_.builder->build(cpp, work_ / "build", work_ / "lab");
+        const BuiltLab b = c_.builder->build(cpp, c_.versions, work_ / "build", work_ / "lab");
         row_.build_cpu = b.cpu_seconds;
-        if (b.ok) return true;
+        if (b.ok) {
+            for (const auto& [id, dir] : c_.labs) {
+                const auto said = b.not_built.find(dir);
+                if (said == b.not_built.end() || (row_.labs.count(id) && row_.labs[id].resumed))
+                    continue;
+                const fs::path log = work_ / ("build-" + id + ".log");
+                report::write_text_file(log.string(), said->second);
+                if (row_.first_error.empty()) row_.first_error = first_error(said->second);
+                not_built(id,
+                          "this lab does not build: its C++ does not compile (the compiler's "
+                          "message is below); the other labs were graded with its starting code",
+                          log, first_error(said->second));
+            }
+            return true;
+        }
         row_.first_error = b.first_error;
         const fs::path log = work_ / "build" / "build.log";
         for (const auto& [id, dir] : c_.labs) {
             if (row_.labs.count(id) && row_.labs[id].resumed) continue;
-            LabGrade& g = row_.labs[id];
-            g.status = "not built";
-            not_graded(id, reports_ / id,
-                       "the submission does not build (the compiler's message is below)",
-                       fs::exists(log) ? log.string() : "", g);
-            save(id, g);
+            // Graded again next time: what failed the build may be another lab's.
+            hashes_[id] = "";
+            not_built(id, "the submission does not build (the compiler's message is below)",
+                      fs::exists(log) ? log : fs::path(), b.first_error);
         }
         return false;
+    }
+
+    void not_built(const std::string& id, const std::string& reason, const fs::path& log,
+                   const std::string& first) {
+        LabGrade& g = row_.labs[id];
+        g.status = "not built";
+        not_graded(id, reports_ / id, reason, log.string(), g);
+        save(id, g, first);
     }
 
     void grade_lab(const std::string& id) {
@@ -259,12 +284,13 @@ private:
                            "); please tell the course staff",
                        log.string(), g);
         }
-        save(id, g);
+        save(id, g, "");
     }
 
-    void save(const std::string& id, const LabGrade& g) {
+    // `first`: the compiler's first error, for a lab not built.
+    void save(const std::string& id, const LabGrade& g, const std::string& first) {
         write_atomically(reports_ / id / "class.json",
-                         lab_json(g, hashes_.at(id), row_.first_error).dump(2) + "\n");
+                         lab_json(g, hashes_.at(id), first).dump(2) + "\n");
     }
 
     const ClassContext& c_;

@@ -37,6 +37,10 @@ struct GradeOptions {
     enum class Sandbox { Auto, Strict } sandbox = Sandbox::Auto;
     // --memory: the cgroup's memory limit per lab, in MiB (where there is one).
     int memory_mib = 2048;
+    // --not-built FILE (`course autograde`): a JSON object from a lab's
+    // folder to what the compiler said of its C++, which did not compile;
+    // no child runs such a lab, and every check of it fails.
+    std::string not_built;
 };
 int grade_command(const GradeOptions& options);
 

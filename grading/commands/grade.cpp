@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -25,6 +26,9 @@
 #include "grading/judge/course_seed.hpp"
 #include "grading/judge/file_isolation.hpp"
 #include "grading/judge/state_diff.hpp"
+#include "grading/platforms/autograder.hpp"
+#include "grading/platforms/compile_units.hpp"
+#include "grading/release/release.hpp"
 #include "grading/report/reports.hpp"
 #include "grading/run/parallel.hpp"
 #include "grading/sandbox/isolation.hpp"
@@ -254,6 +258,68 @@ std::vector<LabData> labs_to_grade(const std::vector<LabData>& all,
     return labs;
 }
 
+// --not-built FILE: a JSON object from a lab's folder to what the compiler
+// said of its C++ (`course autograde`); none without the option.
+std::map<std::string, std::string> read_not_built(const std::string& file) {
+    if (file.empty()) return {};
+    try {
+        return nlohmann::json::parse(read_file(file)).get<std::map<std::string, std::string>>();
+    } catch (const std::exception& e) {
+        throw fw::UsageError("--not-built " + file +
+                             ": not a JSON object of lab folders and the compiler's output (" +
+                             e.what() + ")");
+    }
+}
+
+// The labs of --not-built judged into run.labs, at their index in `labs`:
+// no child runs them, every check fails, the status names the compiler's
+// first error and the log is the start of what the compiler said. Returns
+// the indices of the others, for the children.
+std::vector<size_t> judge_not_built(const std::vector<LabData>& labs, const GradeOptions& options,
+                                    GradeRun& run) {
+    constexpr size_t kShown = 16 * 1024;
+    const std::map<std::string, std::string> not_built = read_not_built(options.not_built);
+    std::vector<size_t> others;
+    for (size_t i = 0; i < labs.size(); ++i) {
+        const auto said = not_built.find(labs[i].dir);
+        if (said == not_built.end()) {
+            others.push_back(i);
+            continue;
+        }
+        const std::string first = first_error(said->second), log = said->second;
+        run.labs[i] = not_run_lab(
+            labs[i], "does not build" + (first.empty() ? "" : ": " + first),
+            log.size() <= kShown ? log : log.substr(0, kShown) + "\n(the rest left out)\n",
+            options.out);
+        if (options.progress) print_progress(run.labs[i]);
+    }
+    return others;
+}
+
+// The labs of `labs` at `which`, each graded by a child into run.labs at the
+// same index: --jobs workers, each with one child for its share of them
+// (every jobs-th): one process start per worker, not per lab.
+void grade_in_children(const std::vector<LabData>& labs, const std::vector<size_t>& which,
+                       const ChildSetup& setup, const GradeOptions& options, GradeRun& run) {
+    std::mutex print_mutex;
+    std::atomic<int> in_flight{0};
+    const std::function<int()> threads = [&in_flight] { return judging_threads(in_flight); };
+    const size_t workers = std::min<size_t>(which.size(), static_cast<size_t>(options.jobs));
+    parallel_for(workers, options.jobs, [&](size_t w) {
+        std::vector<const LabData*> share;
+        for (size_t i = w; i < which.size(); i += workers) share.push_back(&labs[which[i]]);
+        const InFlight flight(in_flight);
+        std::vector<LabResult> results = grade_labs(share, setup, threads);
+        for (size_t k = 0; k < results.size(); ++k) {
+            LabResult& result = run.labs[which[w + k * workers]];
+            result = std::move(results[k]);
+            if (!options.progress) continue;
+            std::lock_guard<std::mutex> lock(print_mutex);
+            print_progress(result);
+        }
+    });
+}
+
 }  // namespace
 
 int grade_command(const GradeOptions& options) {
@@ -289,25 +355,8 @@ int grade_command(const GradeOptions& options) {
     run.sandbox = sandbox_layers(setup.user, setup.limits, namespaces_why, cgroups_why);
     if (options.sandbox == GradeOptions::Sandbox::Strict) require_every_layer(run.sandbox);
 
-    // --jobs workers, each with one child for its share of the labs (every
-    // jobs-th lab): one process start per worker, not per lab.
     run.labs.resize(labs.size());
-    std::mutex print_mutex;
-    std::atomic<int> in_flight{0};
-    const std::function<int()> threads = [&in_flight] { return judging_threads(in_flight); };
-    const size_t workers = std::min<size_t>(labs.size(), static_cast<size_t>(options.jobs));
-    parallel_for(workers, options.jobs, [&](size_t w) {
-        std::vector<const LabData*> share;
-        for (size_t i = w; i < labs.size(); i += workers) share.push_back(&labs[i]);
-        const InFlight flight(in_flight);
-        std::vector<LabResult> results = grade_labs(share, setup, threads);
-        for (size_t k = 0; k < results.size(); ++k) {
-            run.labs[w + k * workers] = std::move(results[k]);
-            if (!options.progress) continue;
-            std::lock_guard<std::mutex> lock(print_mutex);
-            print_progress(run.labs[w + k * workers]);
-        }
-    });
+    grade_in_children(labs, judge_not_built(labs, options, run), setup, options, run);
 
     timing.stop(run);
     write_reports(run, options.out, {options.format, options.results, options.hidden_as});

@@ -3,9 +3,11 @@
 // root. It puts the submitted files in place of those in the course's tree,
 // rebuilds `lab`, grades it with `course grade` and copies the results to
 // results/results.json. Whatever the submission does, it leaves a complete
-// results.json: for Gradescope, a submission that does not build, or a
-// grader that fails, scores 0 on every check with the reason in the output;
-// for PrairieLearn it is not gradable, with the reason.
+// results.json: for Gradescope, a lab whose C++ does not compile scores 0
+// on its own checks, the others built with its starting code; a submission
+// that does not build even so, or a grader that fails, scores 0 on every
+// check with the reason in the output; for PrairieLearn a submission that
+// does not build is not gradable, with the reason.
 #include <fcntl.h>
 #include <pwd.h>
 #include <sys/stat.h>
@@ -17,13 +19,16 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
 
 #include "framework/error.hpp"
+#include "framework/text.hpp"
 #include "grading/judge/file_isolation.hpp"
 #include "grading/platforms/autograder.hpp"
+#include "grading/platforms/compile_units.hpp"
 #include "grading/platforms/run_logged.hpp"
 #include "grading/platforms/submitted_files.hpp"
 #include "grading/report/prairielearn_results.hpp"
@@ -222,24 +227,59 @@ private:
     // The compiler runs as the user, who cannot read references or checkpoint
     // files, so no #include can quote them into the message.
     bool build_lab() {
-        std::vector<std::string> command;
-        if (as_user_)
-            // A compiler cache, where the image has one, is root's: the user compiles plainly.
-            command = {"runuser", "-u", options_.user, "--", "env", "CCACHE_DISABLE=1"};
+        std::vector<std::string> command = compile_as_user();
         command.insert(command.end(), {"cmake", "--build", (source_ / "build").string(), "--target",
                                        "lab", "-j", std::to_string(affinity_cpus())});
         const std::string as = as_user_ ? " as " + options_.user : "";
         std::printf("%sbuilding lab%s\n", layout_.prefix.c_str(), as.c_str());
         std::error_code ec;
         fs::remove(lab_, ec);
-        const fs::path log = fs::path(work_->path()) / "build.log";
+        fs::path log = fs::path(work_->path()) / "build.log";
         if (run_logged(command, log, false) == 0 && access(lab_.c_str(), X_OK) == 0) return true;
+        if (layout_.format == ResultsFormat::Gradescope &&
+            build_without_labs_at_fault(command, log))
+            return true;
         not_graded(layout_.format == ResultsFormat::PrairieLearn
                        ? "the submission does not build (the compiler's message is under Output)"
                        : "the submission does not build (the compiler's message is at the top "
                          "of the results)",
                    log.string());
         return false;
+    }
+
+    // What runs a compiler as the user, before its command; none unless as_user_.
+    std::vector<std::string> compile_as_user() const {
+        if (!as_user_) return {};
+        // A compiler cache, where the image has one, is root's: the user compiles plainly.
+        return {"runuser", "-u", options_.user, "--", "env", "CCACHE_DISABLE=1"};
+    }
+
+    // Gradescope, after a failed build: the labs whose C++ does not compile
+    // (each file compiled alone, as the user) are built from their starting
+    // code, so that `lab` builds for the others, and are graded as not built
+    // (course grade --not-built). False when no lab's C++ is at fault, or
+    // `lab` still does not build (`log` is then that build's).
+    bool build_without_labs_at_fault(const std::vector<std::string>& command, fs::path& log) {
+        const std::vector<std::string> files = read_lines(source_ / "student_files.txt");
+        const fs::path versions = source_ / "student_versions", work = work_->path();
+        std::string as;
+        for (const std::string& word : compile_as_user()) as += fw::shell_quote(word) + " ";
+        not_built_ = labs_not_compiling(source_, files, versions, as, work);
+        if (not_built_.empty()) return false;
+        for (const std::string& rel : files)
+            if (not_built_.count(lab_folder(rel)) && fs::path(rel).extension() == ".cpp" &&
+                !copy_contents(versions / rel, source_ / rel))
+                return false;
+        for (const auto& [lab, said] : not_built_)
+            std::printf(
+                "%s%s does not compile: built from its starting code for the other labs; "
+                "it scores 0\n",
+                layout_.prefix.c_str(), lab.c_str());
+        log = work / "build-again.log";
+        if (run_logged(command, log, false) != 0 || access(lab_.c_str(), X_OK) != 0) return false;
+        report::write_text_file((work / "not-built.json").string(),
+                                nlohmann::json(not_built_).dump() + "\n");
+        return true;
     }
 
     // With one worker (no --jobs): no lab's own child, whose log reaches the
@@ -267,6 +307,11 @@ private:
         } else {
             command.insert(command.end(), {"--hidden-as", name_of(options_.hidden_as)});
             shown += std::string(" --hidden-as ") + name_of(options_.hidden_as);
+        }
+        if (!not_built_.empty()) {
+            command.insert(command.end(),
+                           {"--not-built", (fs::path(work_->path()) / "not-built.json").string()});
+            shown += " --not-built not-built.json";
         }
         for (const std::string& lab : options_.labs) {
             command.push_back(lab);
@@ -316,6 +361,8 @@ private:
     fs::path source_, results_, lab_;
     bool as_user_;                   // build and grade as options_.user (root, and the user exists)
     std::unique_ptr<WorkDir> work_;  // for the logs
+    // The labs whose C++ did not compile, by folder: what the compiler said.
+    std::map<std::string, std::string> not_built_;
 };
 
 }  // namespace

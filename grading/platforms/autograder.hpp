@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "grading/judge/checks.hpp"
 #include "grading/report/reports.hpp"
 
 namespace grading {
@@ -88,6 +89,11 @@ int not_graded_command(const std::string& reason, const std::string& log_file,
                        const std::string& out_dir, ResultsFormat format = ResultsFormat::Gradescope,
                        const std::vector<std::string>& labs = {},
                        HiddenAs hidden_as = HiddenAs::AfterDueDate, bool print = true);
+
+// The result of a lab that no child ran (its checks parsed): every check
+// failed, `reason` its status and `log` its log.
+LabResult not_run_lab(const LabData& lab, const std::string& reason, const std::string& log,
+                      const std::string& out_dir);
 
 // The last `lines` lines of the file at `path`, taken from at most its last
 // MiB; throws fw::Error when it cannot be read.

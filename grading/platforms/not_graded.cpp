@@ -34,25 +34,31 @@ std::string log_tail(const std::string& path, int lines) {
     return start == std::string::npos || start == text.size() ? text : text.substr(start + 1);
 }
 
-int not_graded_command(const std::string& reason, const std::string& log_file,
-                       const std::string& out_dir, ResultsFormat format,
-                       const std::vector<std::string>& labs, HiddenAs hidden_as, bool print) {
-    const std::string log = log_file.empty() ? "" : log_tail(log_file, 200);
+LabResult not_run_lab(const LabData& lab, const std::string& reason, const std::string& log,
+                      const std::string& out_dir) {
     // The checks, named and scored as `course grade` names them, judged on the
     // outputs of a child that never ran: an empty work directory.
     WorkDir empty(nullptr);
     ChildRun none;
     none.status = LabStatus::failed(reason);
     const ChildOutputs outputs(empty.path(), none, ChildLimits{});
+    LabResult result;
+    result.lab = lab.id;
+    result.status = LabStatus::failed(reason);
+    result.log = log;
+    result.checks = judge_lab(lab, plan_lab(lab, 0, PlanFor::Grading), outputs, out_dir);
+    for (CheckResult& check : result.checks) check.output.clear();  // the status says why
+    return result;
+}
+
+int not_graded_command(const std::string& reason, const std::string& log_file,
+                       const std::string& out_dir, ResultsFormat format,
+                       const std::vector<std::string>& labs, HiddenAs hidden_as, bool print) {
+    const std::string log = log_file.empty() ? "" : log_tail(log_file, 200);
     GradeRun run;
     for (LabData& lab : select_labs(discover_labs(source_root()), labs)) {
         parse_checks(lab);
-        LabResult result;
-        result.lab = lab.id;
-        result.status = LabStatus::failed(reason);
-        result.checks = judge_lab(lab, plan_lab(lab, 0, PlanFor::Grading), outputs, out_dir);
-        for (CheckResult& check : result.checks) check.output.clear();  // the status says why
-        run.labs.push_back(std::move(result));
+        run.labs.push_back(not_run_lab(lab, reason, "", out_dir));
     }
     write_reports(run, out_dir, {ResultsFormat::Gradescope, "", hidden_as});
     const std::string path = report::in_dir(out_dir, "results.json");

@@ -334,6 +334,34 @@ TEST_CASE("course grade --shader-cache: a note when the seed was warmed for othe
     CHECK((g.output.find(note) != std::string::npos) == keyed);
 }
 
+TEST_CASE("course grade --not-built: the lab is not run, every check fails with the first error") {
+    const std::string out = fw::test::out_dir() + "/report",
+                      file = fw::test::out_dir() + "/not-built.json";
+    const std::string first = "labs/00_pipeline/pipeline.cpp:3:1: error: 'x' was not declared";
+    // The compiler's output for lab 0's files; a folder of no graded lab is ignored.
+    const std::string said =
+        "labs/00_pipeline/pipeline.cpp: In function 'f':\n" + first + "\n    3 | x = 1;\n";
+    fw::test::write_text(file, json{{"00_pipeline", said}, {"99_no_such_lab", "ignored"}}.dump());
+    Graded g = grade("", "pipeline --not-built " + file, out);
+    CHECK(g.exit_code == 1);
+    REQUIRE(g.results.is_object());
+    CHECK(g.results["score"].get<double>() == 0.0);
+    CHECK(checks_of(g.results).size() == lab0_checks().size());
+    for (const json& t : g.results["tests"]) {
+        CHECK(t["status"] == "failed");
+        CHECK(unescape_markup(t.value("output", "")).find("does not build: " + first) !=
+              std::string::npos);
+    }
+    fw::test::check_mentions(unescape_markup(g.results.value("output", "")),
+                             {"does not build: " + first, "3 | x = 1;"});
+    fw::test::check_mentions(g.output, {"does not build: " + first});
+    // Anything but an object of lab folders and texts is a usage error.
+    fw::test::write_text(file, "[\"00_pipeline\"]");
+    g = grade("", "pipeline --not-built " + file, out);
+    CHECK(g.exit_code == 2);
+    fw::test::check_mentions(g.output, {"--not-built", file});
+}
+
 TEST_CASE("course grade: usage and set-up errors exit 2 and say what would fix them") {
     const std::string out = fw::test::out_dir() + "/report";
     Graded g = grade("", "nosuch", out);

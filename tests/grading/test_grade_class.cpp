@@ -270,3 +270,44 @@ TEST_CASE("grade-class: a second run grades only what changed; shards merge to o
               q(root / "slice1"))
               .exit_code == 2);
 }
+
+TEST_CASE("grade-class: a lab whose file does not compile costs that lab alone") {
+    const fs::path root = fw::test::out_dir(), subs = root / "subs", out = root / "out";
+    fs::remove_all(subs);
+    fs::remove_all(out);
+    const std::string arm = fw::test::read_text(fw::test::source_dir() + "/" + kArmFile);
+    // both: the two labs' solutions; broken: lab 1's file does not compile.
+    fw::test::write_text((subs / "both" / kFile).string(), solution());
+    fw::test::write_text((subs / "both" / kArmFile).string(), arm);
+    fw::test::write_text((subs / "broken" / kFile).string(),
+                         changed("return from_rows(s.x, 0, 0, 0,", "return from_rows(s.x, 0, 0,"));
+    fw::test::write_text((subs / "broken" / kArmFile).string(), arm);
+    auto labs = [&](int expected_exit) {
+        const fw::test::CommandResult r = run(course() + " grade-class " + q(subs) + " --out " +
+                                              q(out) + " --labs transforms,robot-arm --jobs 2");
+        CHECK(r.exit_code == expected_exit);
+        return r.output;
+    };
+    labs(1);
+    const auto both = row_of(out, "both"), broken = row_of(out, "broken");
+    CHECK(both.at("status") == "graded");
+    CHECK(std::stod(both.at("robot-arm")) > 0);
+    // 0 for the lab that does not compile, with the compiler's first error...
+    CHECK(broken.at("transforms") == "0");
+    CHECK(broken.at("status").rfind("does not build: " + std::string(kFile) + ":", 0) == 0);
+    CHECK(fw::test::read_text((out / "students/broken/transforms/summary.txt").string())
+              .find("this lab does not build") != std::string::npos);
+    const json results = json::parse(
+        fw::test::read_text((out / "students/broken/transforms/results.json").string()));
+    fw::test::check_mentions(results.value("output", ""), {kFile, "error"});
+    // ...and the other lab's points as the solution's: graded with lab 1 at its starting code.
+    CHECK(broken.at("robot-arm") == both.at("robot-arm"));
+    CHECK(json::parse(fw::test::read_text(
+              (out / "students/broken/robot-arm/class.json").string()))["status"] == "graded");
+    // Fixed, the lab is graded again alone; the other lab's grade stands.
+    const auto kept = fs::last_write_time(out / "students/broken/robot-arm/class.json");
+    fw::test::write_text((subs / "broken" / kFile).string(), solution());
+    CHECK(labs(0).find("(1 graded, 1 unchanged)") != std::string::npos);
+    CHECK(row_of(out, "broken").at("transforms") == both.at("transforms"));
+    CHECK(fs::last_write_time(out / "students/broken/robot-arm/class.json") == kept);
+}

@@ -1,8 +1,9 @@
 // `course gradescope` end to end (gradescope_support.hpp sets the
 // autograder up once): the folder as written, the solution, nothing (the
-// student versions), a submission that does not compile, and a grader that
-// fails. Every results.json must list every check of every lab with its
-// points. The hostile submissions are in test_gradescope_hostile.cpp.
+// student versions), a file that does not compile (its lab fails, the
+// others are graded), and a grader that fails. Every results.json must list
+// every check of every lab with its points. The hostile submissions are in
+// test_gradescope_hostile.cpp.
 #include <unistd.h>
 
 #include <filesystem>
@@ -195,17 +196,25 @@ TEST_CASE("gradescope: the solution, uploaded flat, scores full marks") {
     CHECK(run.results.value("score", -1.0) == doctest::Approx(ag.expected.points));
 }
 
-TEST_CASE("gradescope: a submission that does not compile scores 0 with the compiler's message") {
+TEST_CASE("gradescope: a file that does not compile scores 0 on its lab alone, with the message") {
     Autograder& ag = autograder();
     const std::string file = victim_file(ag, "labs", false);
     Run run = submit(ag, "compile error in " + file,
                      hostile(ag, file, "    undeclared_name_in_submission = 1;", false));
-    check_complete(run, ag.expected);
-    CHECK(run.results.value("score", -1.0) == 0.0);
+    // Each check of the lab names the compiler's first error, at the file's
+    // path in the repository; the other labs, built with the lab's starting
+    // code, score as the solution's.
+    check_victim_failed(ag, run, "does not build: " + file + ":");
+    double victim = 0, others = 0;
+    for (const json& t : run.results["tests"])
+        (lab_of(t) == ag.expected.victim ? victim : others) += t.value("score", 0.0);
+    CHECK(victim == 0.0);
+    CHECK(others > 0.0);
     const std::string output = run.results.value("output", "");
     fw::test::check_mentions(output, {"does not build", fs::path(file).filename().string(),
                                       "undeclared_name_in_submission", "error"});
-    for (const json& t : run.results["tests"]) CHECK(t["status"] == "failed");
+    fw::test::check_mentions(run.output,
+                             {ag.expected.victim_dir + " does not compile", "--not-built"});
 }
 
 TEST_CASE("gradescope: the compiler cannot quote checkpoints or references back to the student") {
@@ -226,8 +235,7 @@ TEST_CASE("gradescope: the compiler cannot quote checkpoints or references back 
     REQUIRE_MESSAGE(!hidden.empty(), checkpoints << " has no hidden checkpoint");
     Run run = submit(ag, "#include of " + checkpoints.string() + " in " + file,
                      hostile(ag, file, "#include " + json(checkpoints.string()).dump(), false));
-    check_complete(run, ag.expected);
-    CHECK(run.results.value("score", -1.0) == 0.0);
+    check_victim_failed(ag, run, "does not build");
     const std::string output = run.results.value("output", "");
     // The compiler, run as the user, may not even open the file.
     fw::test::check_mentions(output, {"does not build", "checkpoints.json", "Permission denied"});
