@@ -23,7 +23,7 @@
 //   the lab fails (which would be the likelier cause).
 //
 // The lines come last in the check's output and diagnosis, after the
-// evidence itself (docs/contract.md, "What the grader says").
+// evidence itself (docs/contract.md, "Guesses from a frame").
 #pragma once
 
 #include <map>

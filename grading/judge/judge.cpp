@@ -57,6 +57,21 @@ void verdict(CheckResult& r, bool pass, const std::string& output) {
     r.output = output;
 }
 
+// A failed frame that matches one the course knows is a guess, said once
+// the evidence is in (say_frame_guesses); a part at its starting code is
+// said in its place.
+void note_matches(const LabData& lab, const fw::Checkpoint& cp, const fw::Image& image,
+                  const fw::CompareOptions& opt, ReferenceImages& references,
+                  const std::string& starting, CheckResult& r) {
+    if (!starting.empty()) {
+        r.diagnosis = starting;
+        return;
+    }
+    const FrameMatches m = failed_frame_matches(lab, cp, image, opt, references);
+    r.guess.mistake_image = m.mistake ? m.mistake->image : "";
+    r.guess.checkpoint = m.checkpoint;
+}
+
 // `starting`: the sentence that a part the checkpoint needs still has its
 // starting code (starting_code.hpp), said in place of the frame's matches,
 // which a missing part's frame is no evidence of.
@@ -106,18 +121,7 @@ void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck&
                          fw::compare_images(*image, reference, opt).difference);
     }
     std::string where = c.passed ? "" : describe_difference(*image, reference, c);
-    // A frame that matches one the course knows is a guess, said once the
-    // evidence is in (say_frame_guesses); a part at its starting code is
-    // said in its place.
-    if (!c.passed && !c.size_mismatch) {
-        if (starting.empty()) {
-            const FrameMatches m = failed_frame_matches(lab, cp, *image, opt, references);
-            r.guess.mistake_image = m.mistake ? m.mistake->image : "";
-            r.guess.checkpoint = m.checkpoint;
-        } else {
-            r.diagnosis = starting;
-        }
-    }
+    if (!c.passed && !c.size_mismatch) note_matches(lab, cp, *image, opt, references, starting, r);
     verdict(r, c.passed,
             expected + "Observed: " + c.summary() + (where.empty() ? "" : "\n" + where) +
                 (r.diagnosis.empty() ? "" : "\n" + r.diagnosis));
@@ -332,24 +336,6 @@ void keep_written(const std::string& dir, const std::vector<std::string>& render
 }
 
 }  // namespace
-
-bool has_reference_records(const LabData& lab) {
-    for (const fw::Checkpoint& cp : lab.file.checkpoints)
-        if (has_reference_record(lab, cp.name)) return true;
-    return false;
-}
-
-StateLeftOut state_checks_left_out(const LabData& lab) {
-    StateLeftOut out;
-    if (has_reference_records(lab)) return out;
-    for (const std::vector<Check>& checks : lab.checks)
-        for (const Check& c : checks)
-            if (c.kind == CheckKind::State) {
-                ++out.checks;
-                out.points += c.points;
-            }
-    return out;
-}
 
 bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const RenderPlan& render,
                        const ChildOutputs& outputs) {

@@ -226,14 +226,10 @@ std::string order_sentence(const json& s, const json& r, const std::string& scen
 
 }  // namespace
 
-namespace {
-
 bool valid_record(const json& j) {
     return j.is_object() && j.value("version", 0) == fw::gl_record::kVersion &&
            j.contains("events") && j["events"].is_array();
 }
-
-}  // namespace
 
 std::string reference_record(const LabData& lab, const std::string& checkpoint) {
     return "labs/" + lab.dir + "/reference/" + checkpoint + ".record.json";
@@ -318,11 +314,11 @@ std::string state_difference(const json& student, const json& reference, const f
     return "";
 }
 
-namespace {
-
 json read_record(const std::string& path) {
     return json::parse(read_text_file(path), nullptr, /*allow_exceptions=*/false);
 }
+
+namespace {
 
 // The sentence for two records, "" where they agree or are not records.
 std::string difference_or_none(const json& student, const json& reference, const fw::Checkpoint& cp,
@@ -347,48 +343,6 @@ int record_is_checkpoints(const LabData& lab, const fw::Checkpoint& cp, const st
 }
 
 }  // namespace
-
-void judge_state(const LabData& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
-                 CheckResult& r) {
-    r.title = "state of the draws the sheet fixes";
-    const std::string rel = reference_record(lab, cp.name);
-    const std::string expected =
-        "Expected: each draw, dispatch, clear and read-back told the "
-        "state the solution's are (" +
-        rel + ")\n";
-    r.passed = false;
-    r.score = 0.0;
-    // (A copy with no records at all, a student's, does not judge it:
-    // judge_lab leaves it out.)
-    if (!has_reference_record(lab, cp.name)) {
-        r.output =
-            expected + "Observed: no reference record " + rel + "; run course bless " + lab.id;
-        return;
-    }
-    std::string bytes, why;
-    if (!outputs.read(cp.name + ".record.json", 16 * kMiB, bytes, why)) {
-        r.output = expected + "Observed: no record of the draws: " + why;
-        return;
-    }
-    const json student = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
-    const json reference = read_record(lab.root + "/" + rel);
-    if (!valid_record(student)) {
-        r.output = expected + "Observed: the lab's record of the draws is not one";
-        return;
-    }
-    std::string sentence;
-    try {
-        sentence = state_difference(student, reference, cp, lab.state_words,
-                                    r.visibility == Visibility::Visible);
-    } catch (const json::exception& e) {
-        r.output = expected + "Observed: the lab's record of the draws cannot be read: " + e.what();
-        return;
-    }
-    r.passed = sentence.empty();
-    r.score = r.passed ? r.max_score : 0.0;
-    r.output = expected + "Observed: " + (r.passed ? "the same state in every one" : sentence);
-    if (!r.passed) r.diagnosis = sentence;
-}
 
 void add_state_diff(const LabData& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
                     std::vector<CheckResult>& results) {

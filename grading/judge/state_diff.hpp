@@ -19,6 +19,11 @@
 
 namespace grading {
 
+// Whether `j` is a record of this version (record.hpp).
+bool valid_record(const nlohmann::json& j);
+// The record in the file at `path`: a discarded value where it is not JSON.
+nlohmann::json read_record(const std::string& path);
+
 // labs/NN_name/reference/CHECKPOINT.record.json, relative to the root.
 std::string reference_record(const LabData& lab, const std::string& checkpoint);
 // Whether the checkpoint has a reference record: grading then asks the
