@@ -526,6 +526,12 @@ constexpr const char* kMistakesJson = R"json(
    "find": "round(u_detail / distance(p, u_eye))",
    "replace": "floor(u_detail / distance(p, u_eye))",
    "why": "rounds the level down instead of to the nearest integer"},
+  {"id": "tessellation-lod-no-clamp",
+   "lab": "05_tessellation",
+   "file": "shaders/05_tessellation/lod.tesc",
+   "find": "return clamp(round(u_detail / distance(p, u_eye)), 1.0, 64.0);",
+   "replace": "return round(u_detail / distance(p, u_eye));",
+   "why": "leaves out the clamp, trusting GL to clamp the levels: far from the eye k / d rounds to 0 and GL discards the patch"},
 
   // Lab 6 `interpolation`
   {"id": "interpolation-frag-default-qualifier",
