@@ -23,13 +23,24 @@ std::vector<fw::Param> params() {
                   "away (planar)")
             .key('A'),
         fw::Param::choice(kFog, kFogs, Fog::Linear)
-            .help("the fog factor: none, linear from 1 to 9, exp or exp2 with fog_density (fog)")
+            .help("the fog factor: none, linear from fog_start to fog_end, exp or exp2 with "
+                  "fog_density (fog)")
             .key('F'),
         fw::Param::number(kFogDensity, 0.25)
             .range(0.0, 1.0)
             .step(0.05)
             .help("the density of exp and exp2 fog, per unit of distance (fog)")
             .key('D'),
+        fw::Param::number(kFogStart, 1)
+            .range(0.0, 4.0)
+            .step(0.5)
+            .help("linear fog: f = 1 at this distance and nearer (fog)")
+            .key('N'),
+        fw::Param::number(kFogEnd, 9)
+            .range(5.0, 20.0)
+            .step(0.5)
+            .help("linear fog: f = 0 at this distance and farther: only the fog's colour (fog)")
+            .key('E'),
         fw::Param::number(kBias, 0.02)
             .range(0.0, 0.2)
             .step(0.005)

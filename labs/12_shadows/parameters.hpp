@@ -22,6 +22,8 @@ constexpr fw::ParamId<bool> kStencil{"stencil"};
 constexpr fw::ParamId<float> kShadowAlpha{"shadow_alpha"};
 constexpr fw::ParamId<Fog> kFog{"fog"};
 constexpr fw::ParamId<float> kFogDensity{"fog_density"};
+constexpr fw::ParamId<float> kFogStart{"fog_start"};
+constexpr fw::ParamId<float> kFogEnd{"fog_end"};
 constexpr fw::ParamId<float> kBias{"bias"};
 constexpr fw::ParamId<bool> kPcf{"pcf"};
 

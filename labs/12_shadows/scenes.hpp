@@ -17,7 +17,6 @@ const glm::vec4 kCasterAColor{0.9f, 0.2f, 0.2f, 1.0f};
 const glm::vec4 kCasterBColor{0.2f, 0.3f, 0.9f, 1.0f};
 const glm::vec4 kSurfaceColor{0.9f, 0.3f, 0.1f, 1.0f};
 const glm::vec3 kFogColor{0.5f, 0.6f, 0.7f};
-constexpr float kFogStart = 1.0f, kFogEnd = 9.0f;
 
 // scene=planar: the lights, as shadow_matrix() takes them.
 const glm::vec4 kDirectionalLight{1.0f, 1.0f, 0.0f, 0.0f};  // towards the light

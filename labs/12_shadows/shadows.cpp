@@ -181,8 +181,8 @@ private:
         // Unused, and dropped, until the student's fog is written.
         fog_->set_if_active(kFogColorUniform, kFogColor);
         fog_->set_if_active(kFogModeUniform, static_cast<int>(p[kFog]));
-        fog_->set_if_active(kFogStartUniform, kFogStart);
-        fog_->set_if_active(kFogEndUniform, kFogEnd);
+        fog_->set_if_active(kFogStartUniform, p[kFogStart]);
+        fog_->set_if_active(kFogEndUniform, p[kFogEnd]);
         fog_->set_if_active(kFogDensityUniform, p[kFogDensity]);
         draw_mesh(fog_planes_);
     }

@@ -1,6 +1,7 @@
 // Lab 12 `shadows`. Every expectation is computed here from the sheet's
 // numbers (labs/12_shadows/README.md, docs/labs.md), by hand or by tracing
 // rays on the CPU, never read from a reference image or from the lab's code.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -112,17 +113,28 @@ TEST_CASE("shadows: planar: every pixel's shadow layers, traced towards the ligh
 TEST_CASE("shadows: fog: each plane is mix(fog, surface, f) of its depth") {
     Lab lab;
     const glm::vec3 fog(0.5f, 0.6f, 0.7f), surface(0.9f, 0.3f, 0.1f);
-    for (const char* mode : {"linear", "exp", "exp2", "none"}) {
-        const fw::RenderOutput out =
-            lab.render({{"scene", "fog"}, {"fog", mode}, {"fog_density", "0.3"}});
+    // Linear from 3 to 7 puts the first plane before the start (f 1.25,
+    // clamped to 1) and the last beyond the end (f -0.25, clamped to 0).
+    struct Case {
+        const char* mode;
+        float start, end;
+    };
+    for (const Case c : {Case{"linear", 1, 9}, Case{"linear", 3, 7}, Case{"exp", 1, 9},
+                         Case{"exp2", 1, 9}, Case{"none", 1, 9}}) {
+        const std::string mode = c.mode;
+        const fw::RenderOutput out = lab.render({{"scene", "fog"},
+                                                 {"fog", mode},
+                                                 {"fog_density", "0.3"},
+                                                 {"fog_start", std::to_string(c.start)},
+                                                 {"fog_end", std::to_string(c.end)}});
         for (int k = 0; k < 4; ++k) {
             const float d = 2.0f + 2.0f * k, m = 0.3f * d;
-            const std::string s = mode;
-            const float f = s == "linear" ? (9.0f - d) / 8.0f
-                            : s == "exp"  ? std::exp(-m)
-                            : s == "exp2" ? std::exp(-m * m)
-                                          : 1.0f;
-            INFO(mode << ", plane at depth " << d);
+            const float f = mode == "linear"
+                                ? std::clamp((c.end - d) / (c.end - c.start), 0.0f, 1.0f)
+                            : mode == "exp"  ? std::exp(-m)
+                            : mode == "exp2" ? std::exp(-m * m)
+                                             : 1.0f;
+            INFO(mode << " from " << c.start << " to " << c.end << ", plane at depth " << d);
             for (const int y : {100, 256, 400})
                 CHECK(fw::test::probe_rgb(out.color, 64 + 128 * k, y, glm::mix(fog, surface, f),
                                           kTol));
