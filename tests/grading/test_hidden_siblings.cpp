@@ -5,6 +5,7 @@
 // the same from the other side: each realistic mistake loses points on a
 // visible check.)
 #include <algorithm>
+#include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
@@ -61,4 +62,41 @@ TEST_CASE("every hidden checkpoint keeps a visible sibling that fails with it") 
         }
     }
     CHECK(hidden > 0);
+}
+
+TEST_CASE("a copy without the solution's records leaves its state checks to the autograder") {
+    namespace fs = std::filesystem;
+    // Lab 7's data as a student's copy holds it: no reference/*.record.json.
+    const fs::path root = fs::path(fw::test::out_dir()) / "no-records";
+    const fs::path lab_dir = root / "labs" / "07_framebuffer_ops";
+    fs::remove_all(root);
+    fs::create_directories(lab_dir / "reference");
+    const fs::path source = fs::path(fw::test::source_dir()) / "labs" / "07_framebuffer_ops";
+    fs::copy_file(source / "checkpoints.json", lab_dir / "checkpoints.json");
+    for (const fs::directory_entry& e : fs::directory_iterator(source / "reference"))
+        if (e.path().extension() == ".png")
+            fs::copy_file(e.path(), lab_dir / "reference" / e.path().filename());
+    auto load = [&] {
+        std::vector<grading::LabData> labs = grading::discover_labs(root.string());
+        REQUIRE(labs.size() == 1);
+        grading::parse_checks(labs[0]);
+        return labs[0];
+    };
+    size_t state_checks = 0;
+    double points = 0;
+    grading::LabData lab = load();
+    for (const std::vector<grading::Check>& checks : lab.checks)
+        for (const grading::Check& c : checks)
+            if (c.kind == grading::CheckKind::State) ++state_checks, points += c.points;
+    REQUIRE(state_checks > 0);
+    CHECK_FALSE(grading::has_reference_records(lab));
+    const grading::StateLeftOut left = grading::state_checks_left_out(lab);
+    CHECK(left.checks == static_cast<int>(state_checks));
+    CHECK(left.points == doctest::Approx(points));
+    // With one record back, the copy is the course's: nothing is left out.
+    fs::copy_file(source / "reference" / "blend_over.record.json",
+                  lab_dir / "reference" / "blend_over.record.json");
+    lab = load();
+    CHECK(grading::has_reference_records(lab));
+    CHECK(grading::state_checks_left_out(lab).checks == 0);
 }
