@@ -12,6 +12,21 @@ namespace fs = std::filesystem;
 
 std::string import_points(double v) { return fw::trimmed_decimals(v, 2); }
 
+// A lab's score as an import should take it: none where it was not graded
+// (the submission could not be read, or course grade failed: grades.csv
+// says why), whatever the student's code did otherwise.
+std::optional<double> lab_score(const ClassRow& r, const std::string& lab) {
+    const auto g = r.labs.find(lab);
+    if (g == r.labs.end() || g->second.status == "not graded") return std::nullopt;
+    return g->second.score;
+}
+
+// A roster student as messages name them.
+std::string roster_who(const RosterStudent& st) {
+    const std::string& key = !st.sis_login_id.empty() ? st.sis_login_id : st.id_number;
+    return st.name + (key.empty() ? "" : " (" + key + ")");
+}
+
 namespace {
 
 std::string points(double v) { return import_points(v); }

@@ -11,11 +11,27 @@
 #include <vector>
 
 #include "grading/class/gradebook.hpp"
+#include "grading/class/roster.hpp"
 
 namespace grading::cls {
 
 // Points as the import files write them: at most two decimals.
 std::string import_points(double v);
+
+// A lab's score as an import should take it: none where it was not graded.
+std::optional<double> lab_score(const ClassRow& r, const std::string& lab);
+
+// A roster student as messages name them: the name and the SIS login or
+// ID number.
+std::string roster_who(const RosterStudent& st);
+
+// roster_match.csv (roster_match_file.cpp), for the staff: each roster
+// student's submission, how it was found and which of `labs` were not
+// graded, then the submissions no roster row names; each line said on
+// stderr too.
+std::string roster_match_text(const Roster& roster, const RosterMatch& match,
+                              const std::vector<ClassRow>& rows,
+                              const std::vector<std::string>& labs);
 
 // A file to import: the columns that identify the student, then a column
 // of points per lab (or per total); a row per student.

@@ -53,15 +53,6 @@ void check_title(const std::string& title, const std::string& option) {
 
 std::string points(double v) { return import_points(v); }
 
-// A lab's score as an import should take it: none where it was not graded
-// (the submission could not be read, or course grade failed: grades.csv
-// says why), whatever the student's code did otherwise.
-std::optional<double> lab_score(const ClassRow& r, const std::string& lab) {
-    const auto g = r.labs.find(lab);
-    if (g == r.labs.end() || g->second.status == "not graded") return std::nullopt;
-    return g->second.score;
-}
-
 std::optional<double> sum_score(const ClassRow& r, const std::vector<std::string>& labs) {
     double sum = 0;
     for (const std::string& lab : labs) {
@@ -79,15 +70,6 @@ std::map<std::string, double> lab_maxima(const std::vector<ClassRow>& rows) {
         for (const auto& [id, g] : r.labs)
             if (g.status != "not graded") max[id] = std::max(max[id], g.max_score);
     return max;
-}
-
-// A submission's student as messages and roster_match.csv name them.
-std::string who_text(const std::vector<ClassRow>& rows, const SubmissionStudent& s) {
-    const Student* st = student_of(rows, s);
-    if (!st) return rows[s.row].submission.key;
-    std::string t = st->name.empty() ? st->email : st->name;
-    if (!st->name.empty() && !st->email.empty()) t += " <" + st->email + ">";
-    return t;
 }
 
 // canvas.csv's columns as --canvas-column asks for them (LmsOptions).
@@ -194,12 +176,6 @@ std::vector<std::optional<std::string>> lab_cells(const ClassRow& r,
     return cells;
 }
 
-// A roster student as messages name them.
-std::string roster_who(const RosterStudent& st) {
-    const std::string& key = !st.sis_login_id.empty() ? st.sis_login_id : st.id_number;
-    return st.name + (key.empty() ? "" : " (" + key + ")");
-}
-
 // moodle.csv: each matched roster student by the roster's identifiers, the
 // Email address (Moodle's "Identify user by" Email address) and, where the
 // roster has one for every such student, the ID number. A student the
@@ -241,50 +217,6 @@ ImportTable moodle_table(const Roster& roster, const RosterMatch& match,
         t.rows.push_back(std::move(r));
     }
     return t;
-}
-
-// roster_match.csv, for the staff: each roster student's submission, how it
-// was found and which labs were not graded, then the submissions' students
-// no roster row names. Each line is said on stderr too.
-std::string roster_match_text(const Roster& roster, const RosterMatch& match,
-                              const std::vector<ClassRow>& rows,
-                              const std::vector<std::string>& labs) {
-    const bool canvas = roster.kind == Roster::Kind::canvas;
-    const std::string none = canvas ? "no submission: 0 in canvas.csv" : "no submission";
-    std::string text = line_of({"Student", "ID", canvas ? "SIS User ID" : "ID number",
-                                canvas ? "SIS Login ID" : "Email address", "submission",
-                                "submitted by", "matched by", "not graded"});
-    for (size_t i = 0; i < roster.students.size(); ++i) {
-        const RosterStudent& st = roster.students[i];
-        const RosterMatch::Found& f = match.of_student[i];
-        std::vector<std::string> fields = {st.name, st.id, st.sis_user_id, st.sis_login_id};
-        if (f.matched) {
-            std::vector<std::string> not_graded;
-            for (const std::string& id : labs)
-                if (!lab_score(rows[f.who.row], id)) not_graded.push_back(id);
-            fields.insert(fields.end(), {rows[f.who.row].submission.key, who_text(rows, f.who),
-                                         f.by, fw::join(not_graded, " ")});
-        } else {
-            fields.insert(fields.end(), {"", "", none, ""});
-            std::fprintf(stderr, "grade-class: no submission from %s%s%s\n", roster_who(st).c_str(),
-                         st.id.empty() ? "" : (" ID " + st.id).c_str(),
-                         canvas ? ": 0 in canvas.csv" : "");
-        }
-        text += line_of(fields, csv_field);
-    }
-    for (const SubmissionStudent& s : match.not_on_roster) {
-        const std::string who = s.student < 0 ? "" : " (" + who_text(rows, s) + ")";
-        std::fprintf(stderr, "grade-class: submission %s%s is on no row of the roster%s\n",
-                     rows[s.row].submission.key.c_str(), who.c_str(),
-                     canvas ? ": not in canvas.csv" : "");
-        text += line_of({"", "", "", "", rows[s.row].submission.key, who_text(rows, s),
-                         "not on the roster", ""},
-                        csv_field);
-    }
-    for (const std::string& a : match.ambiguous)
-        std::fprintf(stderr, "grade-class: roster: %s, so none of them was matched by it\n",
-                     a.c_str());
-    return text;
 }
 
 // canvas.csv: the roster's student columns as Canvas wrote them, so that

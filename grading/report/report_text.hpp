@@ -34,6 +34,10 @@ std::string first_line(const std::string& text);
 
 // A score without needless decimals: 10, 2.5, 0.33.
 std::string points(double value);
+// `value` with `decimals` digits after the point, "%.*f".
+std::string fixed(double value, int decimals);
+// junit.xml (junit.cpp): one <testcase> per checkpoint, failures first.
+std::string junit_xml(const GradeRun& run);
 
 // `relative` (a path inside the output directory) joined to `out_dir`.
 std::string in_dir(const std::string& out_dir, const std::string& relative);
