@@ -18,9 +18,9 @@
 # SKIP; LAB_REQUIRE_CLANG_FORMAT=1 makes that a failure, exit 1, as CI wants).
 # CLANG_FORMAT=/path/to/clang-format picks the binary.
 #
-# clang-format 14 (Debian 12) and 19 (Debian 13) format this tree alike; the
-# constructs where they still differ, and how to write them, are in
-# docs/conventions.md, Formatting.
+# clang-format 14 (Debian 12) and 19 (Debian 13) format this tree alike, and
+# the check runs each version installed; the constructs where they still
+# differ, and how to write them, are in docs/conventions.md, Formatting.
 set -euo pipefail
 
 usage() {
@@ -49,16 +49,24 @@ if [ ! -f "$dir/.clang-format" ]; then
   exit 2
 fi
 
-# The binary: $CLANG_FORMAT, else clang-format, else the newest clang-format-NN.
-cf=${CLANG_FORMAT:-}
-if [ -z "$cf" ]; then
-  if command -v clang-format >/dev/null; then
-    cf=clang-format
-  else
-    cf=$({ compgen -c clang-format- | grep -E '^clang-format-[0-9]+$' | sort -t- -k3 -n | tail -1; } 2>/dev/null || true)
-  fi
+# The binaries: $CLANG_FORMAT alone, else every clang-format on the PATH
+# (clang-format and each clang-format-NN), one per version, so that a machine
+# with both 14 and 19 checks what Debian 12 and Debian 13 would each say.
+version_of() { "$1" --version | sed -n 's/.*clang-format version \([0-9][0-9.]*\).*/\1/p'; }
+cfs=()
+if [ -n "${CLANG_FORMAT:-}" ]; then
+  command -v "$CLANG_FORMAT" >/dev/null && cfs=("$CLANG_FORMAT")
+else
+  seen=" "
+  for c in clang-format $({ compgen -c clang-format- | grep -E '^clang-format-[0-9]+$' | sort -u -t- -k3 -n; } 2>/dev/null || true); do
+    command -v "$c" >/dev/null || continue
+    v=$(version_of "$c")
+    case $seen in *" $v "*) continue ;; esac
+    seen="$seen$v "
+    cfs+=("$c")
+  done
 fi
-if [ -z "$cf" ] || ! command -v "$cf" >/dev/null; then
+if ((${#cfs[@]} == 0)); then
   why="clang-format is not installed (apt-get install clang-format, or set CLANG_FORMAT=/path/to/clang-format)"
   [ -n "${CLANG_FORMAT:-}" ] && why="CLANG_FORMAT='$CLANG_FORMAT' is not an executable"
   if [ "${LAB_REQUIRE_CLANG_FORMAT:-0}" = 1 ]; then
@@ -68,7 +76,6 @@ if [ -z "$cf" ] || ! command -v "$cf" >/dev/null; then
   echo "check-format: SKIP: $why"
   exit 77
 fi
-version=$("$cf" --version | sed -n 's/.*clang-format version \([0-9][0-9.]*\).*/\1/p')
 
 # The files, relative to $dir, NUL-separated.
 areas=(framework grading labs tests bench)
@@ -97,39 +104,62 @@ if ((${#files[@]} == 0)); then
 fi
 
 cd "$dir"
-# A .clang-format this clang-format cannot read (an option it does not know)
-# would otherwise look like a formatting failure of every file.
-if ! err=$("$cf" --style=file --dump-config "${files[0]}" 2>&1 >/dev/null); then
-  echo "check-format: clang-format $version cannot use $dir/.clang-format:" >&2
-  echo "$err" >&2
-  exit 2
-fi
-
-# The verdict: clang-format --dry-run --Werror over all files at once, which
-# names each offending file in "FILE:LINE:COL: error: code should be clang-formatted".
-flagged=()
-while IFS= read -r f; do flagged+=("$f"); done < <(
-  printf '%s\0' "${files[@]}" |
-    { xargs -0 "$cf" --style=file --dry-run --Werror 2>&1 >/dev/null || true; } |
-    sed -n 's/^\(.*\):[0-9][0-9]*:[0-9][0-9]*: error: code should be clang-formatted.*/\1/p' |
-    sort -u
-)
-
 tmp=$(mktemp)
 trap 'rm -f "$tmp"' EXIT
-bad=()
-for f in "${flagged[@]}"; do
-  "$cf" --style=file "$f" >"$tmp"
-  cmp -s "$f" "$tmp" && continue
-  bad+=("$f")
-  if ((fix)); then
-    cat "$tmp" >"$f"  # keeps the file's mode
-    echo "  fixed $f"
-  else
-    lines=$({ diff "$f" "$tmp" || true; } | grep -c '^[<>]' || true)
-    echo "  $f: $lines lines differ; the start of the diff (- now, + formatted):"
-    { diff -U0 "$f" "$tmp" || true; } | sed -n '3,12p' | sed 's/^/      /'
+total=${#files[@]}
+status=0
+
+# check_with CF: the files CF would format otherwise, listed (or rewritten
+# with --fix), and its verdict; sets status=1 where some file differs.
+check_with() {
+  local cf=$1 version err f lines
+  version=$(version_of "$cf")
+  # A .clang-format this clang-format cannot read (an option it does not
+  # know) would otherwise look like a formatting failure of every file.
+  if ! err=$("$cf" --style=file --dump-config "${files[0]}" 2>&1 >/dev/null); then
+    echo "check-format: clang-format $version cannot use $dir/.clang-format:" >&2
+    echo "$err" >&2
+    exit 2
   fi
+  # clang-format --dry-run --Werror over all files at once names each
+  # offending file in "FILE:LINE:COL: error: code should be clang-formatted".
+  local flagged=() bad=()
+  while IFS= read -r f; do flagged+=("$f"); done < <(
+    printf '%s\0' "${files[@]}" |
+      { xargs -0 "$cf" --style=file --dry-run --Werror 2>&1 >/dev/null || true; } |
+      sed -n 's/^\(.*\):[0-9][0-9]*:[0-9][0-9]*: error: code should be clang-formatted.*/\1/p' |
+      sort -u
+  )
+  for f in "${flagged[@]}"; do
+    "$cf" --style=file "$f" >"$tmp"
+    cmp -s "$f" "$tmp" && continue
+    bad+=("$f")
+    if ((fix)); then
+      cat "$tmp" >"$f"  # keeps the file's mode
+      echo "  fixed $f"
+    else
+      lines=$({ diff "$f" "$tmp" || true; } | grep -c '^[<>]' || true)
+      echo "  $f: $lines lines differ; the start of the diff (- now, + formatted):"
+      { diff -U0 "$f" "$tmp" || true; } | sed -n '3,12p' | sed 's/^/      /'
+    fi
+  done
+  if ((${#bad[@]} == 0)); then
+    echo "check-format: all $total C++ files under $dir are formatted (clang-format $version)"
+  elif ((fix)); then
+    echo "check-format: reformatted ${#bad[@]} of $total C++ files under $dir (clang-format $version)"
+  else
+    echo "check-format: ${#bad[@]} of $total C++ files under $dir are not formatted (clang-format $version);"
+    echo "check-format: fix them with: scripts/check-format.sh --fix $dir"
+    status=1
+  fi
+}
+
+# With --fix the first version rewrites and the others then only check: two
+# versions that disagree on a construct need it written as
+# docs/conventions.md, Formatting says.
+for cf in "${cfs[@]}"; do
+  check_with "$cf"
+  if ((fix)); then fix=0; fi
 done
 
 # clang-format leaves `// STUDENT:` lines alone (CommentPragmas), so it never
@@ -143,17 +173,6 @@ long=$(printf '%s\0' "${files[@]}" | xargs -0 awk -v limit="${limit:-100}" '
   }')
 [ -z "$long" ] || echo "$long"
 
-total=${#files[@]}
-status=0
-if ((${#bad[@]} == 0)); then
-  echo "check-format: all $total C++ files under $dir are formatted (clang-format $version)"
-elif ((fix)); then
-  echo "check-format: reformatted ${#bad[@]} of $total C++ files under $dir (clang-format $version)"
-else
-  echo "check-format: ${#bad[@]} of $total C++ files under $dir are not formatted (clang-format $version);"
-  echo "check-format: fix them with: scripts/check-format.sh --fix $dir"
-  status=1
-fi
 if [ -n "$long" ]; then
   echo "check-format: $(echo "$long" | wc -l) STUDENT lines are too long (--fix cannot split them)"
   status=1

@@ -39,6 +39,9 @@ if [ "${LAB_SETUP_TESTS:-0}" = 1 ]; then
   packages+=(chromium python3-html5lib)
   # A one-node Slurm cluster for the sharded class grading's test.
   packages+=(slurmctld slurmd slurm-client munge)
+  # Debian 13's clang-format beside Debian 12's, so that the format test on
+  # either checks what both would say (scripts/check-format.sh runs each).
+  packages+=(clang-format-19)
 fi
 
 preset=${LAB_PRESET:-}
@@ -82,6 +85,10 @@ if ((${#missing[@]})); then
   if ! apt-cache show libosmesa6-dev >/dev/null 2>&1; then
     echo "setup: libosmesa6-dev is not available on this system; building without the osmesa backend"
     missing=("${missing[@]/libosmesa6-dev/}")
+  fi
+  if ! apt-cache show clang-format-19 >/dev/null 2>&1; then
+    echo "setup: clang-format-19 is not available on this system; the format test checks with clang-format alone"
+    missing=("${missing[@]/clang-format-19/}")
   fi
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends ${missing[*]}
 fi

@@ -88,13 +88,13 @@ bool GradeRun::passed() const {
 
 namespace {
 
-// The count and points of what each lab left out, summed.
-GradeRun::LeftOut summed(const std::vector<LabResult>& labs, int LabResult::*count,
-                         double LabResult::*points) {
+// The count and points of what each lab left out, summed: the state checks'
+// where `state`, else the hidden checkpoints'.
+GradeRun::LeftOut summed(const std::vector<LabResult>& labs, bool state) {
     GradeRun::LeftOut out;
     for (const LabResult& lab : labs) {
-        out.checkpoints += lab.*count;
-        out.points += lab.*points;
+        out.checkpoints += state ? lab.state_left_out : lab.hidden_left_out;
+        out.points += state ? lab.state_points_left_out : lab.hidden_points_left_out;
     }
     out.points = rounded_points(out.points);
     return out;
@@ -102,12 +102,8 @@ GradeRun::LeftOut summed(const std::vector<LabResult>& labs, int LabResult::*cou
 
 }  // namespace
 
-GradeRun::LeftOut GradeRun::hidden_left_out() const {
-    return summed(labs, &LabResult::hidden_left_out, &LabResult::hidden_points_left_out);
-}
+GradeRun::LeftOut GradeRun::hidden_left_out() const { return summed(labs, false); }
 
-GradeRun::LeftOut GradeRun::state_left_out() const {
-    return summed(labs, &LabResult::state_left_out, &LabResult::state_points_left_out);
-}
+GradeRun::LeftOut GradeRun::state_left_out() const { return summed(labs, true); }
 
 }  // namespace grading

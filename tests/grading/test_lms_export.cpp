@@ -404,9 +404,10 @@ TEST_CASE("canvas.csv: a maximum other than the roster's Points Possible is a wa
                      "Student;ID;SIS Login ID;Section;Lab One (101)\r\n"
                      "    Points Possible;;;;5,0\r\n\"Doe, Jane\";1;jdoe@uni.edu;A;\r\n")
             .string();
-    const std::string quiet = stderr_of([&] {
+    const auto write = [&] {
         LmsExport({comma, {"pipeline=Lab One"}}, kLabs).write(dir, class_rows(), "");
-    });
+    };
+    const std::string quiet = stderr_of(write);
     INFO(quiet);
     CHECK(quiet.find("warning: canvas.csv") == std::string::npos);
 }
