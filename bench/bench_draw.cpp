@@ -2,7 +2,7 @@
 // framebuffer, clear, D draws of a small quad, glFinish) are drawn through
 // fw::Program/VertexArray and with raw GL on the same objects, in alternating
 // blocks of one run. Goal: wrapper/raw <= 1.02. Then what the loader's hooks
-// cost with no observer (every GL call passes them: framework/gl/calls.hpp):
+// cost with no observer (every GL call passes them: framework/trace/calls.hpp):
 // the raw frames through the hooks against the same frames calling the
 // driver's functions directly. Goal: hooks/direct <= 1.02. Prints figures;
 // not a test.

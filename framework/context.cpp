@@ -12,8 +12,8 @@
 
 #include "framework/backends/backends.hpp"
 #include "framework/error.hpp"
-#include "framework/gl/calls.hpp"
 #include "framework/gl/vertex_array.hpp"
+#include "framework/trace/calls.hpp"
 
 namespace fw {
 

@@ -37,6 +37,34 @@ void reset_write_state() {
     glStencilMask(0xFFu);
 }
 
+namespace {
+
+// The bound framebuffer's `mask` buffers cleared to where every frame starts:
+// colour black, depth 1, stencil 0 (the write state reset first).
+void clear_to_start(GLbitfield mask) {
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClearDepth(1.0);
+    glClearStencil(0);
+    glClear(mask);
+}
+
+}  // namespace
+
+void present_frame(const Framebuffer* frame, int width, int height) {
+    // A scissor rectangle the lab left would clip the copy.
+    reset_write_state();
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    if (frame) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, frame->id());
+        glBlitFramebuffer(0, 0, frame->width(), frame->height(), 0, 0, frame->width(),
+                          frame->height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    } else {
+        glViewport(0, 0, width, height);
+        clear_to_start(GL_COLOR_BUFFER_BIT);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 LabRenderer::LabRenderer(const RegisteredLab& lab, ContextInfo context)
     : registered_(lab), context_(std::move(context)), programs_(lab.info.dir), lab_(lab.create()) {
     enable_debug_output();
@@ -59,10 +87,7 @@ void LabRenderer::begin_frame(int width, int height) {
     }
     framebuffer_->bind();
     reset_write_state();
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClearDepth(1.0);
-    glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    clear_to_start(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
 // The lab's draw inside the frame's queries, finished by GL.

@@ -44,6 +44,11 @@ struct ReadBack {
 // before a clear or a copy.
 void reset_write_state();
 
+// The renderer's frame copied into the default framebuffer (a window's back
+// buffer, `width` x `height`); cleared to black while there is no frame yet.
+// Every clear of a frame is the frame protocol's: begin_frame() and this.
+void present_frame(const Framebuffer* frame, int width, int height);
+
 class LabRenderer {
 public:
     // Creates the lab and calls its init(); throws what init throws.

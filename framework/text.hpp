@@ -14,7 +14,6 @@ namespace fw {
 //
 //   join(std::vector<std::string>{"a", "b"}, ", ")   // "a, b"
 //   join(labs, ", ", &LabData::id)                    // "00_pipeline, 01_transforms"
-//   join(errors, ", ", gl_enum_name)                  // "GL_INVALID_ENUM, ..."
 template <class Range, class Proj = std::identity>
 std::string join(const Range& items, std::string_view sep, Proj proj = {}) {
     std::string out;

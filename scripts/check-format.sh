@@ -155,8 +155,8 @@ check_with() {
 }
 
 # With --fix the first version rewrites and the others then only check: two
-# versions that disagree on a construct need it written as
-# docs/conventions.md, Formatting says.
+# versions that disagree on a construct need it written the way both accept
+# (docs/conventions.md, Formatting).
 for cf in "${cfs[@]}"; do
   check_with "$cf"
   if ((fix)); then fix=0; fi

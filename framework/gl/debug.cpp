@@ -1,5 +1,6 @@
 #include "framework/gl/debug.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <utility>
 
@@ -72,7 +73,9 @@ void check_gl(const char* where) {
     if (codes.empty() && messages.empty()) return;
 
     std::string text = "GL error after " + std::string(where) + ": ";
-    text += codes.empty() ? "debug message" : join(codes, ", ", gl_enum_name);
+    text += codes.empty() ? "debug message" : join(codes, ", ", [](GLenum e) {
+        return gl_enum_name(e, GLAD_GL_GROUP_ErrorCode);
+    });
     if (!messages.empty()) text += ": " + join(messages, "; ");
     text += " [" + bound_label(GL_CURRENT_PROGRAM, GL_PROGRAM, "program") + ", " +
             bound_label(GL_VERTEX_ARRAY_BINDING, GL_VERTEX_ARRAY, "vertex array") + ", " +
@@ -100,50 +103,15 @@ std::string object_label(GLenum identifier, GLuint id) {
     return label;
 }
 
-namespace {
-
-struct EnumName {
-    GLenum value;
-    const char* name;
-};
-
-// Each enum's name written once, by the preprocessor.
-#define FW_ENUM_NAME(e) \
-    EnumName { e, #e }
-constexpr EnumName kEnumNames[] = {
-    // glGetError
-    FW_ENUM_NAME(GL_NO_ERROR),
-    FW_ENUM_NAME(GL_INVALID_ENUM),
-    FW_ENUM_NAME(GL_INVALID_VALUE),
-    FW_ENUM_NAME(GL_INVALID_OPERATION),
-    FW_ENUM_NAME(GL_INVALID_FRAMEBUFFER_OPERATION),
-    FW_ENUM_NAME(GL_OUT_OF_MEMORY),
-    FW_ENUM_NAME(GL_STACK_UNDERFLOW),
-    FW_ENUM_NAME(GL_STACK_OVERFLOW),
-    // glCheckFramebufferStatus
-    FW_ENUM_NAME(GL_FRAMEBUFFER_UNDEFINED),
-    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT),
-    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT),
-    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER),
-    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER),
-    FW_ENUM_NAME(GL_FRAMEBUFFER_UNSUPPORTED),
-    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE),
-    FW_ENUM_NAME(GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS),
-    // Query targets (fw::Query)
-    FW_ENUM_NAME(GL_PRIMITIVES_GENERATED),
-    FW_ENUM_NAME(GL_SAMPLES_PASSED),
-    FW_ENUM_NAME(GL_ANY_SAMPLES_PASSED),
-    FW_ENUM_NAME(GL_ANY_SAMPLES_PASSED_CONSERVATIVE),
-    FW_ENUM_NAME(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN),
-    FW_ENUM_NAME(GL_TIME_ELAPSED),
-};
-#undef FW_ENUM_NAME
-
-}  // namespace
-
-std::string gl_enum_name(GLenum value) {
-    for (const EnumName& e : kEnumNames)
-        if (e.value == value) return e.name;
+std::string gl_enum_name(GLenum value, GladGlGroup group) {
+    const GladGlName* begin = glad_gl_names;
+    const GladGlName* end = glad_gl_names + glad_gl_name_count;
+    const auto before = [](const GladGlName& row, std::pair<unsigned, GLenum> key) {
+        return std::make_pair(unsigned{row.group}, row.value) < key;
+    };
+    const GladGlName* it =
+        std::lower_bound(begin, end, std::make_pair(unsigned(group), value), before);
+    if (it != end && it->group == group && it->value == value) return it->name;
     char buf[16];
     std::snprintf(buf, sizeof buf, "0x%04X", value);
     return buf;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <glad/gl.h>
+#include <glad/gl_names.h>
 
 #include <string>
 #include <vector>
@@ -37,9 +38,12 @@ std::vector<std::string> take_debug_messages();
 void set_object_label(GLenum identifier, GLuint id, const std::string& label);
 std::string object_label(GLenum identifier, GLuint id);
 
-// "GL_INVALID_ENUM" for error codes, framebuffer statuses and query targets,
-// the enums the framework prints (one table, debug.cpp); "0x1234" for
-// anything else.
-std::string gl_enum_name(GLenum value);
+// GL's name of `value` among the names of `group`, one of the groups of the
+// Khronos registry (gl.xml) that glad reads: GLAD_GL_GROUP_PrimitiveType
+// names 0 GL_POINTS, GLAD_GL_GROUP_BlendingFactor GL_ZERO. The default,
+// GLAD_GL_GROUP_any, takes any name of the value. One table names every enum
+// of the loader's API, generated with it (scripts/gen-gl-names.py); "0x1234"
+// for a value it does not name.
+std::string gl_enum_name(GLenum value, GladGlGroup group = GLAD_GL_GROUP_any);
 
 }  // namespace fw

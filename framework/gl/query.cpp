@@ -25,7 +25,7 @@ constexpr GLenum kTargets[] = {
 Query::Query(GLenum target, std::string label) : target_(target), label_(std::move(label)) {
     if (std::find(std::begin(kTargets), std::end(kTargets), target) == std::end(kTargets))
         throw UsageError("Query target " + gl_enum_name(target) + " is not supported; use one of " +
-                         join(kTargets, ", ", gl_enum_name) +
+                         join(kTargets, ", ", [](GLenum t) { return gl_enum_name(t); }) +
                          (label_.empty() ? "" : " (query '" + label_ + "')"));
     GLuint id = 0;
     glGenQueries(1, &id);

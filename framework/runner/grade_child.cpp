@@ -13,14 +13,14 @@
 #include <sstream>
 
 #include "framework/error.hpp"
-#include "framework/gl/calls.hpp"
-#include "framework/gl/record.hpp"
 #include "framework/gl/shader.hpp"
-#include "framework/gl/usage.hpp"
 #include "framework/image.hpp"
 #include "framework/lab.hpp"
 #include "framework/lab_buffers.hpp"
 #include "framework/render.hpp"
+#include "framework/trace/calls.hpp"
+#include "framework/trace/record.hpp"
+#include "framework/trace/usage.hpp"
 
 namespace fw {
 
@@ -88,7 +88,7 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     const json given = job.value("params", json::object());
     for (const auto& [key, value] : given.items()) params.set_json(key, value);
     const ReadBack read{job.value("depth", false), job.value("buffers", false)};
-    // "record": what each draw was told (framework/gl/record.hpp).
+    // "record": what each draw was told (framework/trace/record.hpp).
     const bool record = recorder && job.value("record", false);
     if (record) recorder->begin();
     const int width = job.value("width", 512), height = job.value("height", 512);
@@ -182,7 +182,7 @@ Rendering start_rendering(const RegisteredLab& lab, const std::string& backend) 
 
 // Each render in turn (none renders without `renderer`: `init_error` says
 // why): its outputs or NAME.error.txt, and NAME.usage.json where it asks
-// (framework/gl/usage.hpp).
+// (framework/trace/usage.hpp).
 void render_all(LabRenderer* renderer, const std::string& init_error, const RegisteredLab& lab,
                 const json& renders, const std::string& out_dir, gl_record::Recorder* recorder,
                 gl_usage::Checker* usage) {

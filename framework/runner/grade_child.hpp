@@ -18,7 +18,7 @@
 //   NAME.buffers.json                     per render whose entry has "buffers": true
 //                                         (Lab::buffers, framework/lab_buffers.hpp)
 //   NAME.usage.json                       per render whose entry has "usage": true, also
-//                                         for one that failed (framework/gl/usage.hpp)
+//                                         for one that failed (framework/trace/usage.hpp)
 //   units.json                            {"u0": {"result": ...} | {"error": "..."}}
 //   child.json                            written last: {"complete": true, "context": {...}}
 //

@@ -17,6 +17,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <string_view>
 #include <thread>
 
 #include "framework/context.hpp"
@@ -24,6 +25,7 @@
 #include "framework/image.hpp"
 #include "framework/serve/http.hpp"
 #include "framework/serve/live.hpp"
+#include "framework/serve/messages.hpp"
 
 namespace fw {
 
@@ -32,12 +34,10 @@ namespace {
 using nlohmann::json;
 
 // A WebSocket client: its connection and the thread that sends it frames.
-struct Client {
+struct Client : ClientFlags {
     mg_connection* conn = nullptr;
     std::thread sender;
     std::atomic<bool> closing{false};
-    std::atomic<bool> png{false};      // frames as PNG (exact pixels) instead of JPEG
-    std::atomic<bool> playing{false};  // it asked the lab to play
 };
 
 class Server {
@@ -91,65 +91,6 @@ private:
     std::string lab_id_;
 };
 
-std::string text_of(const json& value) {
-    if (value.is_string()) return value.get<std::string>();
-    if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
-    if (value.is_number()) return value.dump();
-    throw UsageError("a value must be a string, a number or true/false, not " + value.dump());
-}
-
-double number_field(const json& m, const char* name) {
-    if (!m.contains(name) || !m[name].is_number())
-        throw UsageError(std::string("\"") + name + "\" must be a number");
-    return m[name].get<double>();
-}
-
-std::string string_field(const json& m, const char* name) {
-    if (!m.contains(name) || !m[name].is_string())
-        throw UsageError(std::string("\"") + name + "\" must be a string");
-    return m[name].get<std::string>();
-}
-
-// One message from the page; returns the version its change will show in.
-std::uint64_t apply_message(Server& server, Client& client, const json& m) {
-    LiveLab& live = server.live();
-    const std::string type = string_field(m, "type");
-    if (type == "set") {
-        if (!m.contains("value")) throw UsageError("\"value\" is missing");
-        return live.set(string_field(m, "name"), text_of(m["value"]));
-    }
-    if (type == "checkpoint") return live.load_checkpoint(string_field(m, "name"));
-    if (type == "drag") {
-        const double dx = number_field(m, "dx");
-        return live.drag(dx, number_field(m, "dy"));
-    }
-    if (type == "scroll") return live.scroll(number_field(m, "steps"));
-    if (type == "key") return live.key(string_field(m, "key"), m.value("shift", false));
-    if (type == "reload") return live.reload_shaders();
-    if (type == "size") {
-        const double w = number_field(m, "width"), h = number_field(m, "height");
-        if (w != static_cast<int>(w) || h != static_cast<int>(h))
-            throw UsageError("\"width\" and \"height\" must be whole numbers");
-        return live.resize(static_cast<int>(w), static_cast<int>(h));
-    }
-    if (type == "play") {
-        if (!m.contains("on") || !m["on"].is_boolean())
-            throw UsageError("\"on\" must be true or false");
-        const bool on = m["on"].get<bool>();
-        if (client.playing.exchange(on) == on) return live.latest() ? live.latest()->version : 0;
-        return live.play(on);
-    }
-    if (type == "format") {
-        const std::string format = string_field(m, "format");
-        if (format != "jpeg" && format != "png")
-            throw UsageError("\"format\" must be \"jpeg\" or \"png\", not \"" + format + "\"");
-        client.png = format == "png";
-        return live.redraw();  // the frame now on screen, again, in that format
-    }
-    throw UsageError("unknown message type \"" + type +
-                     "\"; types: set, checkpoint, drag, scroll, key, reload, size, play, format");
-}
-
 int ws_connect(const mg_connection*, void*) { return 0; }
 
 void ws_ready(mg_connection* conn, void* data) {
@@ -180,7 +121,7 @@ int ws_data(mg_connection* conn, int bits, char* data, size_t size, void* cbdata
         const json m = json::parse(data, data + size, nullptr, false);
         if (!m.is_object()) throw UsageError("a message must be a JSON object");
         if (m.contains("id")) id = m["id"];
-        const std::uint64_t version = apply_message(server, *client, m);
+        const std::uint64_t version = apply_message(server.live(), *client, m);
         Server::send_json(conn, {{"type", "ack"}, {"id", id}, {"version", version}});
     } catch (const Error& e) {
         Server::send_json(conn, {{"type", "error"}, {"id", id}, {"message", e.what()}});
@@ -204,51 +145,73 @@ void ws_close(const mg_connection* conn, void* cbdata) {
     if (client->playing) server.live().play(false);
 }
 
+// The HTTP requests of the page and the API, by path; each replies and
+// returns the status it sent.
+using RouteHandler = int (*)(Server&, mg_connection*, const mg_request_info*, const std::string&);
+struct Route {
+    std::string_view path;
+    bool post;  // POST only; every other route takes GET and HEAD
+    RouteHandler serve;
+};
+
+int api_set(Server& server, mg_connection* conn, const mg_request_info* info, const std::string&) {
+    const auto pairs = query_pairs(info->query_string);
+    if (pairs.empty()) throw UsageError("/api/set needs name=value in its query");
+    std::uint64_t version = 0;
+    for (const auto& [name, value] : pairs) version = server.live().set(name, value);
+    reply(conn, 200, "application/json", json{{"version", version}}.dump() + "\n");
+    return 200;
+}
+
+int api_lab(Server& server, mg_connection* conn, const mg_request_info*, const std::string&) {
+    json body = server.live().describe();
+    body["problems"] = server.live().problems();
+    if (auto frame = server.live().latest()) body["params_now"] = frame->params;
+    reply(conn, 200, "application/json", body.dump() + "\n");
+    return 200;
+}
+
+int frame_file(Server& server, mg_connection* conn, const mg_request_info* info,
+               const std::string& path) {
+    auto frame = server.live().wait_frame(0, std::chrono::seconds(10));
+    if (!frame || frame->color.pixels.empty()) {
+        reply_error(conn, 503, "no frame has been rendered yet");
+        return 503;
+    }
+    const bool png = path == "/frame.png";
+    std::string headers;
+    for (const auto& [name, value] : query_pairs(info->query_string))
+        if (name == "download")
+            headers = "Content-Disposition: attachment; filename=\"" + server.lab_id() + "-" +
+                      std::to_string(frame->seq) + ".png\"\r\n";
+    reply(conn, 200, png ? "image/png" : "image/jpeg", png ? encode_png(frame->color) : frame->jpeg,
+          headers);
+    return 200;
+}
+
+const Route kRoutes[] = {{"/api/set", true, api_set},
+                         {"/api/lab", false, api_lab},
+                         {"/frame.jpg", false, frame_file},
+                         {"/frame.png", false, frame_file}};
+
 int http(mg_connection* conn, void* cbdata) {
     auto& server = *static_cast<Server*>(cbdata);
     const mg_request_info* info = mg_get_request_info(conn);
     const std::string method = info->request_method ? info->request_method : "";
     const std::string path = info->local_uri_raw ? info->local_uri_raw : "";
+    const Route* route = nullptr;
+    for (const Route& r : kRoutes)
+        if (r.path == path) route = &r;
     try {
-        if (path == "/api/set") {
-            if (method != "POST") {
-                reply_error(conn, 405, "/api/set takes POST, e.g. POST /api/set?name=value");
-                return 405;
-            }
-            const auto pairs = query_pairs(info->query_string);
-            if (pairs.empty()) throw UsageError("/api/set needs name=value in its query");
-            std::uint64_t version = 0;
-            for (const auto& [name, value] : pairs) version = server.live().set(name, value);
-            reply(conn, 200, "application/json", json{{"version", version}}.dump() + "\n");
-            return 200;
+        if (route && route->post && method != "POST") {
+            reply_error(conn, 405, path + " takes POST, e.g. POST " + path + "?name=value");
+            return 405;
         }
-        if (method != "GET" && method != "HEAD") {
+        if (!(route && route->post) && method != "GET" && method != "HEAD") {
             reply_error(conn, 405, method + " " + path + ": only GET is served here");
             return 405;
         }
-        if (path == "/api/lab") {
-            json body = server.live().describe();
-            body["problems"] = server.live().problems();
-            if (auto frame = server.live().latest()) body["params_now"] = frame->params;
-            reply(conn, 200, "application/json", body.dump() + "\n");
-            return 200;
-        }
-        if (path == "/frame.jpg" || path == "/frame.png") {
-            auto frame = server.live().wait_frame(0, std::chrono::seconds(10));
-            if (!frame || frame->color.pixels.empty()) {
-                reply_error(conn, 503, "no frame has been rendered yet");
-                return 503;
-            }
-            const bool png = path == "/frame.png";
-            std::string headers;
-            for (const auto& [name, value] : query_pairs(info->query_string))
-                if (name == "download")
-                    headers = "Content-Disposition: attachment; filename=\"" + server.lab_id() +
-                              "-" + std::to_string(frame->seq) + ".png\"\r\n";
-            reply(conn, 200, png ? "image/png" : "image/jpeg",
-                  png ? encode_png(frame->color) : frame->jpeg, headers);
-            return 200;
-        }
+        if (route) return route->serve(server, conn, info, path);
         if (const PageAsset* asset = find_page_asset(path)) {
             reply(conn, 200, asset->mime,
                   std::string(reinterpret_cast<const char*>(asset->data), asset->size));

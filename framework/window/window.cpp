@@ -124,24 +124,6 @@ std::string window_title(const LabInfo& info) {
     return "lab " + std::string(number) + " " + info.id + ": " + info.title;
 }
 
-// The renderer's frame copied into the window's back buffer; black when
-// there is none yet.
-void blit_to_window(const Framebuffer* frame, int width, int height) {
-    // A scissor rectangle the lab left would clip the copy.
-    reset_write_state();
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    if (frame) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, frame->id());
-        glBlitFramebuffer(0, 0, frame->width(), frame->height(), 0, 0, frame->width(),
-                          frame->height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    } else {
-        glViewport(0, 0, width, height);
-        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
 // Prints each problem once, when it appears, so the terminal has it too.
 void print_new(const std::vector<std::string>& problems, std::vector<std::string>& printed) {
     for (const std::string& p : problems)
@@ -221,7 +203,7 @@ private:
         } catch (const std::exception& e) {
             p_.session.drawn(e.what());
         }
-        blit_to_window(p_.renderer.framebuffer(), width, height);
+        present_frame(p_.renderer.framebuffer(), width, height);
     }
 
     // The panel edits a copy, which the session takes if the lab accepts it.

@@ -9,6 +9,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/release/release.hpp"
+#include "grading/results/results.hpp"
 
 namespace grading::cls {
 
@@ -83,9 +84,10 @@ std::vector<Naming> namings_in(const std::string& kind, const std::string& outpu
     std::istringstream lines(output);
     for (std::string raw; std::getline(lines, raw);) {
         const std::string line = trimmed(raw);
-        if (kind == "image") {
+        if (kind == name_of(CheckKind::Image)) {
             if (std::optional<Naming> n = frame_naming(line)) found.push_back(*n);
-        } else if ((kind == "unit" || kind == "buffer") && line.rfind(kLikely, 0) == 0) {
+        } else if ((kind == name_of(CheckKind::Unit) || kind == name_of(CheckKind::Buffer)) &&
+                   line.rfind(kLikely, 0) == 0) {
             const std::string id = in_parentheses(line, kLikely);
             if (!is_id(id)) continue;
             likely.push_back(id);
@@ -209,7 +211,8 @@ private:
         const std::vector<std::string> texts = check_texts(test.value("output", ""));
         if (passed || texts.size() != checks.size()) return;  // no name without its check
         bool frame_failed = false;
-        for (const json& c : checks) frame_failed |= c.at("kind") == "image" && !c.at("passed");
+        for (const json& c : checks)
+            frame_failed |= c.at("kind") == name_of(CheckKind::Image) && !c.at("passed");
         const std::string frame = rel + "/" + lab + "/" + checkpoint + ".png";
         for (size_t i = 0; i < checks.size(); ++i) {
             if (checks[i].at("passed")) continue;

@@ -24,7 +24,7 @@
 //          per float, default 1e-4); passes when the buffer holds the
 //          reference's elements, each float within the tolerance
 //   portable  no fields; passes when the child found no GL usage that the GL
-//          4.3 specification leaves undefined or forbids (framework/gl/usage.hpp)
+//          4.3 specification leaves undefined or forbids (framework/trace/usage.hpp)
 #pragma once
 
 #include <array>

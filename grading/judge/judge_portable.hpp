@@ -1,7 +1,7 @@
 // A `portable` check (docs/contract.md, Checks): GL usage that llvmpipe lets
 // pass and the GL 4.3 specification leaves undefined or forbids, as the
 // grading child found it in the checkpoint's render (NAME.usage.json,
-// framework/gl/usage.hpp). The file is read as hostile input: size-limited,
+// framework/trace/usage.hpp). The file is read as hostile input: size-limited,
 // every entry checked, every string cut to a length a report can show.
 #pragma once
 

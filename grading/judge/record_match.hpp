@@ -16,7 +16,7 @@
 namespace grading {
 
 // Narrows the events of `student` and `reference` (records as
-// framework/gl/record.hpp writes them) to the program interface both hold
+// framework/trace/record.hpp writes them) to the program interface both hold
 // active, program by program (by its label). A program one record never
 // uses is left as it is.
 void keep_common_interface(nlohmann::json& student, nlohmann::json& reference);

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "framework/error.hpp"
-#include "framework/gl/record.hpp"
+#include "framework/trace/record.hpp"
 #include "grading/judge/record_match.hpp"
 #include "grading/judge/state_words.hpp"
 

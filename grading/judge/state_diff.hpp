@@ -1,5 +1,5 @@
 // The state diff: for a checkpoint that failed a check, the student's record
-// of what each draw was told (framework/gl/record.hpp, NAME.record.json from
+// of what each draw was told (framework/trace/record.hpp, NAME.record.json from
 // the child) against the solution's, kept by `course bless` beside the
 // reference image (labs/NN_name/reference/CHECKPOINT.record.json). It names
 // the first draw, dispatch, clear or read-back whose live state differs, in

@@ -96,6 +96,67 @@ std::string joined(const std::vector<std::string>& path) {
     return out;
 }
 
+// The words of a path that no field's entry names, by its first part; "" where
+// the handler does not know the rest of the path.
+using Path = std::vector<std::string>;
+using PathWords = std::string (*)(const Path& path, const std::string& call);
+
+std::string box_words(const Path& path, const char* function) {
+    if (path.size() != 2) return "";
+    return std::string(function) + "'s " + kBoxParts[std::stoi(path[1]) & 3];
+}
+
+std::string block_words(const Path& path, const char* target) {
+    return "the buffer of block " + part(path, 1) + " (glBindBufferBase(" + target + ", ...))" +
+           (path.size() > 2 ? "'s " + part(path, 2) : "");
+}
+
+const std::map<std::string, PathWords>& path_words() {
+    static const std::map<std::string, PathWords> kHeads = {
+        {"args", [](const Path& p, const std::string& call) { return call + "'s " + part(p, 1); }},
+        {"viewport", [](const Path& p, const std::string&) { return box_words(p, "glViewport"); }},
+        {"scissor", [](const Path& p, const std::string&) { return box_words(p, "glScissor"); }},
+        {"color_mask",
+         [](const Path& p, const std::string&) {
+             return p.size() == 2 ? "glColorMask's " + std::string(kChannels[std::stoi(p[1]) & 3])
+                                  : std::string();
+         }},
+        {"uniforms",
+         [](const Path& p, const std::string&) {
+             return "uniform " + part(p, 1) + (p.size() > 2 ? "[" + part(p, 2) + "]" : "");
+         }},
+        {"textures", [](const Path& p, const std::string&) { return texture_words(p); }},
+        {"vertex_array",
+         [](const Path& p, const std::string&) {
+             return part(p, 1) == "attributes" ? attribute_words(p) : std::string();
+         }},
+        {"framebuffer",
+         [](const Path& p, const std::string&) {
+             return "the draw framebuffer" + (p.size() > 1 ? "'s " + part(p, 1) : "") +
+                    " (glBindFramebuffer)";
+         }},
+        {"uniform_buffers",
+         [](const Path& p, const std::string&) { return block_words(p, "GL_UNIFORM_BUFFER"); }},
+        {"storage_buffers",
+         [](const Path& p, const std::string&) {
+             return block_words(p, "GL_SHADER_STORAGE_BUFFER");
+         }},
+        {"transform_feedback",
+         [](const Path&, const std::string&) {
+             return std::string(
+                 "the transform feedback buffers (glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, "
+                 "...))");
+         }},
+        {"buffer",
+         [](const Path&, const std::string&) { return std::string("the buffer it reads"); }},
+        {"images",
+         [](const Path& p, const std::string&) {
+             return "image unit " + part(p, 1) + " (glBindImageTexture)";
+         }},
+    };
+    return kHeads;
+}
+
 }  // namespace
 
 std::string gl_words(const std::vector<std::string>& path, const std::string& call) {
@@ -107,30 +168,10 @@ std::string gl_words(const std::vector<std::string>& path, const std::string& ca
     }
     auto it = kFields.find(whole);
     if (it != kFields.end()) return it->second;
-    const std::string& head = path[0];
-    const auto at = [&](size_t i) { return part(path, i); };
-    if (head == "args") return call + "'s " + at(1);
-    if ((head == "viewport" || head == "scissor") && path.size() == 2)
-        return std::string(head == "viewport" ? "glViewport" : "glScissor") + "'s " +
-               kBoxParts[std::stoi(path[1]) & 3];
-    if (head == "color_mask" && path.size() == 2)
-        return "glColorMask's " + std::string(kChannels[std::stoi(path[1]) & 3]);
-    if (head == "uniforms") return "uniform " + at(1) + (path.size() > 2 ? "[" + at(2) + "]" : "");
-    if (head == "textures") return texture_words(path);
-    if (head == "vertex_array" && at(1) == "attributes") return attribute_words(path);
-    if (head == "framebuffer")
-        return "the draw framebuffer" + (path.size() > 1 ? "'s " + at(1) : "") +
-               " (glBindFramebuffer)";
-    if (head == "uniform_buffers" || head == "storage_buffers")
-        return "the buffer of block " + at(1) + " (glBindBufferBase(" +
-               (head == "uniform_buffers" ? "GL_UNIFORM_BUFFER" : "GL_SHADER_STORAGE_BUFFER") +
-               ", ...))" + (path.size() > 2 ? "'s " + at(2) : "");
-    if (head == "transform_feedback")
-        return "the transform feedback buffers (glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, "
-               "...))";
-    if (head == "buffer") return "the buffer it reads";
-    if (head == "images") return "image unit " + at(1) + " (glBindImageTexture)";
-    return whole;
+    const auto head = path_words().find(path[0]);
+    if (head == path_words().end()) return whole;
+    const std::string words = head->second(path, call);
+    return words.empty() ? whole : words;
 }
 
 json read_state_words(const std::string& root, const std::string& lab_dir,

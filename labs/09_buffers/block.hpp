@@ -66,10 +66,12 @@ SceneBlock pack_scene(const glm::mat4& mvp, const glm::mat3& normal_matrix, glm:
 nlohmann::json block_layouts(const fw::Program& program);
 
 // scene=block's surface: the unit icosphere subdivided 3 times, with its
-// normals (A_POSITION, A_NORMAL) and an index buffer.
+// normals (A_POSITION, A_NORMAL) and an index buffer; and the uniform buffer
+// that holds its SceneBlock (GL_DYNAMIC_DRAW, written every frame).
 struct Ellipsoid {
     fw::Buffer vbo, ibo;
     fw::VertexArray vertices;
+    fw::Buffer block;
 };
 Ellipsoid make_ellipsoid();
 

@@ -57,6 +57,12 @@ Ellipsoid make_ellipsoid() {
                             .indices = &e.ibo,
                             .index_type = GL_UNSIGNED_INT,
                             .label = "ellipsoid"});
+    fw::BufferDesc block;
+    block.target = GL_UNIFORM_BUFFER;
+    block.usage = GL_DYNAMIC_DRAW;
+    block.size = sizeof(SceneBlock);
+    block.label = "SceneBlock";
+    e.block = fw::Buffer(block);
     return e;
 }
 

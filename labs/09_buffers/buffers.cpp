@@ -30,8 +30,8 @@
 
 #include "block.hpp"
 #include "framework/gl.hpp"
-#include "framework/gl/usage.hpp"
 #include "framework/lab.hpp"
+#include "framework/trace/usage.hpp"
 #include "parameters.hpp"
 #include "particles.hpp"
 #include "subdivide.hpp"
@@ -88,12 +88,6 @@ public:
         subdivision_ = make_subdivision_pair();
         written_ = fw::Query(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, "primitives written");
         ellipsoid_ = make_ellipsoid();
-        fw::BufferDesc desc;
-        desc.target = GL_UNIFORM_BUFFER;
-        desc.usage = GL_DYNAMIC_DRAW;
-        desc.size = sizeof(SceneBlock);
-        desc.label = "SceneBlock";
-        scene_block_ = fw::Buffer(desc);
     }
 
     void draw(const fw::ParamValues& p, const fw::Frame&) override {
@@ -221,8 +215,8 @@ private:
         const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model)));
         const SceneBlock block =
             pack_scene(projection * model, normal_matrix, kLight, kAmbient, kBlockColor);
-        scene_block_.update(0, &block, sizeof block);
-        glBindBufferBase(GL_UNIFORM_BUFFER, B_SCENE, scene_block_.id());
+        ellipsoid_.block.update(0, &block, sizeof block);
+        glBindBufferBase(GL_UNIFORM_BUFFER, B_SCENE, ellipsoid_.block.id());
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         sphere_->use();
@@ -244,7 +238,6 @@ private:
     SubdivisionPair subdivision_;
     fw::Query written_;
     Ellipsoid ellipsoid_;
-    fw::Buffer scene_block_;
     // What the last draw did, for stats() and buffers().
     Scene scene_ = Scene::Feedback;
     int count_ = 0, result_ = 0, groups_ = 0;

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "framework/gl/calls.hpp"
 #include "framework/gl/program.hpp"
-#include "framework/gl/record.hpp"
+#include "framework/trace/calls.hpp"
+#include "framework/trace/record.hpp"
 
 namespace record_test {
 

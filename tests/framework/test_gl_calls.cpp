@@ -1,4 +1,4 @@
-// framework/gl/calls: every GL call reaches this thread's observer, with its
+// framework/trace/calls: every GL call reaches this thread's observer, with its
 // arguments, before and after the driver's function; without an observer,
 // and while an Unobserved lives, nothing does; and the hooks leave GL's
 // errors to the program (glad's own hooks would call glGetError around
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "framework/gl/calls.hpp"
 #include "framework/gl/debug.hpp"
+#include "framework/trace/calls.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {

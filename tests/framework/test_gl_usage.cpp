@@ -1,4 +1,4 @@
-// framework/gl/usage: each rule on a real context, with and without the
+// framework/trace/usage: each rule on a real context, with and without the
 // mistake it names (a barrier, an enable, a complete texture, a second
 // buffer, a unit number, a bounds check); the checker's own queries leave
 // no GL error behind. Runs once per backend.
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "framework/gl.hpp"
-#include "framework/gl/calls.hpp"
-#include "framework/gl/usage.hpp"
+#include "framework/trace/calls.hpp"
+#include "framework/trace/usage.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {

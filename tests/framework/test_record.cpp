@@ -1,9 +1,9 @@
-// framework/gl/record: what a draw was told, on a real context: the state
+// framework/trace/record: what a draw was told, on a real context: the state
 // that decides its result is there, state that cannot change it is not, no
 // GL object is named by its number, and the same calls give the same text.
 #include <glad/gl.h>
 
-#include "framework/gl/record.hpp"
+#include "framework/trace/record.hpp"
 #include "tests/framework/record_scene.hpp"
 #include "tests/support/test_support.hpp"
 

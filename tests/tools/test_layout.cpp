@@ -838,6 +838,34 @@ TEST_CASE("grading's rooms include only their own room and the rooms below it") 
     report(room_problems(repo()));
 }
 
+TEST_CASE("the GL wrapper students read names nothing of what observes it") {
+    // framework/gl/ includes its own files and three plain ones of the
+    // framework; the record and the usage checks (framework/trace/) attach
+    // through glad's hooks (docs/architecture.md).
+    static const std::set<std::string> plain = {"framework/error.hpp", "framework/image.hpp",
+                                                "framework/text.hpp"};
+    static const std::regex observer(R"(framework/trace|gl_record|gl_usage|gl_calls)");
+    std::vector<Problem> problems;
+    size_t files = 0;
+    for (const std::string& f : repo().files) {
+        if (!starts_with(f, "framework/gl/")) continue;
+        ++files;
+        for (const auto& [line, inc] : quoted_includes(repo().root / f))
+            if (!starts_with(inc, "framework/gl/") && !plain.count(inc))
+                problems.push_back({f + ":" + std::to_string(line),
+                                    "includes \"" + inc + "\"; the wrapper includes only its " +
+                                        "own files, framework/error.hpp, image.hpp and text.hpp"});
+        const std::vector<std::string> lines = read_lines(repo().root / f);
+        for (size_t i = 0; i < lines.size(); ++i)
+            if (std::regex_search(lines[i], observer))
+                problems.push_back({f + ":" + std::to_string(i + 1),
+                                    "names what observes GL; it belongs in framework/trace/"});
+    }
+    MESSAGE(files << " files of framework/gl/");
+    CHECK(files > 20);
+    report(problems);
+}
+
 TEST_CASE("framework and grading headers include no cycle") {
     size_t headers = 0;
     const std::vector<Problem> problems = cycle_problems(repo(), headers);

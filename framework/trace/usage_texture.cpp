@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/gl/calls.hpp"
-#include "framework/gl/usage_detail.hpp"
+#include "framework/trace/calls.hpp"
+#include "framework/trace/usage_detail.hpp"
 
 namespace fw::gl_usage::detail {
 

@@ -1,12 +1,11 @@
-#include "framework/gl/record.hpp"
+#include "framework/trace/record.hpp"
 
 #include <cstdint>
 #include <cstring>
 #include <sstream>
 #include <unordered_map>
 
-#include "framework/gl/barrier_bits.hpp"
-#include "framework/gl/record_state.hpp"
+#include "framework/trace/record_state.hpp"
 
 namespace fw::gl_record {
 
@@ -54,25 +53,6 @@ struct Call {
     std::vector<std::pair<std::string, Arg>> args;
     GLenum identifier = 0;  // Create: the objects' kind
 };
-
-const std::vector<std::pair<GLbitfield, const char*>> kClearBits = {
-    {GL_COLOR_BUFFER_BIT, "GL_COLOR_BUFFER_BIT"},
-    {GL_DEPTH_BUFFER_BIT, "GL_DEPTH_BUFFER_BIT"},
-    {GL_STENCIL_BUFFER_BIT, "GL_STENCIL_BUFFER_BIT"}};
-
-const std::vector<std::pair<GLbitfield, const char*>> kBarrierBits = [] {
-    std::vector<std::pair<GLbitfield, const char*>> bits;
-    for (const fw::BarrierBit& b : fw::kBarrierBits) bits.emplace_back(b.bit, b.name);
-    return bits;
-}();
-
-const std::vector<std::pair<GLbitfield, const char*>> kAccessBits = {
-    {GL_MAP_READ_BIT, "GL_MAP_READ_BIT"},
-    {GL_MAP_WRITE_BIT, "GL_MAP_WRITE_BIT"},
-    {GL_MAP_INVALIDATE_RANGE_BIT, "GL_MAP_INVALIDATE_RANGE_BIT"},
-    {GL_MAP_INVALIDATE_BUFFER_BIT, "GL_MAP_INVALIDATE_BUFFER_BIT"},
-    {GL_MAP_FLUSH_EXPLICIT_BIT, "GL_MAP_FLUSH_EXPLICIT_BIT"},
-    {GL_MAP_UNSYNCHRONIZED_BIT, "GL_MAP_UNSYNCHRONIZED_BIT"}};
 
 // The calls the record knows, each a line "NAME ARG:CODE ...", CODE saying
 // how the argument is written: M mode, e enum, i int, I GLintptr or
@@ -260,14 +240,16 @@ json Recorder::Impl::arguments(const char* name, const Call& c, va_list args, GL
                 break;
             case Arg::ClearBits:
                 mask = va_arg(args, unsigned);
-                out[arg] = bits_name(kClearBits, mask);
+                out[arg] =
+                    bits_name(GLAD_GL_GROUP_ClearBufferMask, mask,
+                              {GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT, GL_STENCIL_BUFFER_BIT});
                 break;
             case Arg::BarrierBits:
                 mask = va_arg(args, unsigned);
-                out[arg] = bits_name(kBarrierBits, mask);
+                out[arg] = bits_name(GLAD_GL_GROUP_MemoryBarrierMask, mask);
                 break;
             case Arg::Access:
-                out[arg] = bits_name(kAccessBits, va_arg(args, unsigned));
+                out[arg] = bits_name(GLAD_GL_GROUP_MapBufferAccessMask, va_arg(args, unsigned));
                 break;
             case Arg::Feedback:
                 out[arg] = names.of(GL_TRANSFORM_FEEDBACK, va_arg(args, unsigned));

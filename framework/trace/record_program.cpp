@@ -4,7 +4,7 @@
 // blocks and the transform feedback buffers it writes (record_state.hpp).
 #include <algorithm>
 
-#include "framework/gl/record_state.hpp"
+#include "framework/trace/record_state.hpp"
 
 namespace fw::gl_record::detail {
 

@@ -2,7 +2,7 @@
 // name; a draw, dispatch or read-back is checked before the driver runs it,
 // with what GL says is bound at that moment (queried under
 // gl_calls::Unobserved, never tracked from every bind call).
-#include "framework/gl/usage.hpp"
+#include "framework/trace/usage.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -11,8 +11,8 @@
 #include <unordered_map>
 
 #include "framework/gl/binding.hpp"
-#include "framework/gl/calls.hpp"
-#include "framework/gl/usage_detail.hpp"
+#include "framework/trace/calls.hpp"
+#include "framework/trace/usage_detail.hpp"
 
 namespace fw::gl_usage {
 

@@ -2,7 +2,7 @@
 // reads and the element buffer of an indexed draw; the buffer a read-back
 // reads (record_state.hpp).
 #include "framework/gl/binding.hpp"
-#include "framework/gl/record_state.hpp"
+#include "framework/trace/record_state.hpp"
 
 namespace fw::gl_record::detail {
 

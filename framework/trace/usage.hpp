@@ -1,5 +1,5 @@
 // fw::gl_usage: GL usage that llvmpipe tolerates and a GPU does not. An
-// observer of the GL calls (framework/gl/calls.hpp) that looks, at every
+// observer of the GL calls (framework/trace/calls.hpp) that looks, at every
 // draw, dispatch and read-back, for what the GL 4.3 specification leaves
 // undefined or forbids, and says what a GPU does instead:
 //
@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/gl/calls.hpp"
+#include "framework/trace/calls.hpp"
 
 namespace fw::gl_usage {
 

@@ -1,12 +1,12 @@
 // The record's queries: what a draw, dispatch, clear or read-back reads of
 // GL's state, where it is live (record.hpp); the queries the other parts
 // share (record_state.hpp) and the names of GL's objects.
-#include "framework/gl/record_state.hpp"
+#include "framework/trace/record_state.hpp"
 
-#include <cstdio>
 #include <cstdlib>
 
 #include "framework/gl/debug.hpp"
+#include "framework/text.hpp"
 
 namespace fw::gl_record::detail {
 
@@ -68,9 +68,8 @@ json ints(GLenum pname, int n) {
 
 json number(double v) {
     if (v == 0.0) return 0;  // -0 too
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    const double rounded = std::strtod(text, nullptr);
+    // Six significant digits, as fw::number_text writes them.
+    const double rounded = std::strtod(fw::number_text(v).c_str(), nullptr);
     if (rounded == static_cast<double>(static_cast<long long>(rounded)) && std::abs(rounded) < 1e15)
         return static_cast<long long>(rounded);
     return rounded;

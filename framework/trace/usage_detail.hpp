@@ -88,7 +88,7 @@ struct Source {
     std::string where;
 };
 // "GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT" for the bit.
-const char* barrier_bit_name(GLbitfield bit);
+std::string barrier_bit_name(GLbitfield bit);
 // The binding point of a storage block of `program`.
 GLuint storage_binding(GLuint program, const StorageBlock& s);
 

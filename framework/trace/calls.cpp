@@ -1,4 +1,4 @@
-#include "framework/gl/calls.hpp"
+#include "framework/trace/calls.hpp"
 
 #include <glad/gl.h>
 

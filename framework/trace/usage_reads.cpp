@@ -3,10 +3,10 @@
 // to that read. Asked of GL at the call, never tracked from the binds.
 #include <cstring>
 
-#include "framework/gl/barrier_bits.hpp"
 #include "framework/gl/binding.hpp"
-#include "framework/gl/calls.hpp"
-#include "framework/gl/usage_detail.hpp"
+#include "framework/gl/debug.hpp"
+#include "framework/trace/calls.hpp"
+#include "framework/trace/usage_detail.hpp"
 
 namespace fw::gl_usage::detail {
 
@@ -46,10 +46,8 @@ GLuint read_attachment() {
 
 }  // namespace
 
-const char* barrier_bit_name(GLbitfield bit) {
-    for (const BarrierBit& b : kBarrierBits)
-        if (b.bit == bit) return b.name;
-    return "GL_ALL_BARRIER_BITS";
+std::string barrier_bit_name(GLbitfield bit) {
+    return fw::gl_enum_name(bit, GLAD_GL_GROUP_MemoryBarrierMask);
 }
 
 std::string object_name(const Key& k) {

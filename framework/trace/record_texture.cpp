@@ -2,7 +2,7 @@
 // sampler state that applies and the texture's levels (record_state.hpp).
 #include <algorithm>
 
-#include "framework/gl/record_state.hpp"
+#include "framework/trace/record_state.hpp"
 
 namespace fw::gl_record::detail {
 

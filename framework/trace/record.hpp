@@ -24,14 +24,16 @@
 #pragma once
 
 #include <glad/gl.h>
+#include <glad/gl_names.h>
 
+#include <initializer_list>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "framework/gl/calls.hpp"
+#include "framework/trace/calls.hpp"
 
 namespace fw::gl_record {
 
@@ -64,11 +66,14 @@ private:
 // well in a diff; the same record gives the same bytes.
 std::string record_text(const nlohmann::json& record);
 
-// record_enums.cpp: the name of `value` among the enums of one kind of state.
+// record_enums.cpp: the name of `value` among the enums of one kind of state
+// (GL's one table of names, fw::gl_enum_name, by its groups).
 enum class EnumKind { Mode, Factor, StencilOp, Other };
 std::string enum_name(EnumKind kind, GLenum value);
-// "GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT": the set bits' names, in the table's order.
-std::string bits_name(const std::vector<std::pair<GLbitfield, const char*>>& bits,
-                      GLbitfield value);
+// "GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT": the names in `group` of the set
+// bits, in the order of `order` (ascending where it is empty), then any bits
+// left as one hex number; "0" for none.
+std::string bits_name(GladGlGroup group, GLbitfield value,
+                      std::initializer_list<GLbitfield> order = {});
 
 }  // namespace fw::gl_record

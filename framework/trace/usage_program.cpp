@@ -7,10 +7,10 @@
 #include <map>
 #include <regex>
 
-#include "framework/gl/calls.hpp"
 #include "framework/gl/debug.hpp"
-#include "framework/gl/usage.hpp"
-#include "framework/gl/usage_detail.hpp"
+#include "framework/trace/calls.hpp"
+#include "framework/trace/usage.hpp"
+#include "framework/trace/usage_detail.hpp"
 
 namespace fw::gl_usage {
 

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "framework/gl/binding.hpp"
-#include "framework/gl/record.hpp"
+#include "framework/trace/record.hpp"
 
 namespace fw::gl_record::detail {
 

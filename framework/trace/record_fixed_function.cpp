@@ -2,7 +2,7 @@
 // program (viewport, colour mask, blending, depth and stencil tests, scissor,
 // culling, polygon mode, line width and point size) and the framebuffer
 // they are written to (record_state.hpp).
-#include "framework/gl/record_state.hpp"
+#include "framework/trace/record_state.hpp"
 
 namespace fw::gl_record::detail {
 
