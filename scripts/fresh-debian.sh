@@ -22,6 +22,11 @@
 #   FRESH_DEBIAN_CACHE   a folder kept between runs for downloaded .deb files
 #                        (default: none, everything is downloaded)
 #   FRESH_DEBIAN_UNSHARE 0: mount in this namespace even where unshare works
+#   FRESH_DEBIAN_TEST_ARGS
+#                        arguments added to the second command, as ctest
+#                        takes them (CI passes -LE "release|...": the tests
+#                        that build copies of the tree ran in its first step);
+#                        printed with the command
 #   CI, LAB_REQUIRE_BACKENDS, LAB_REQUIRE_CLANG_FORMAT, LAB_REQUIRE_BROWSER
 #                        passed into the system when set (CI=true makes
 #                        warnings errors there too; LAB_REQUIRE_BACKENDS=built
@@ -153,9 +158,8 @@ inside() {
     run_step student-grade "cd /root/student && scripts/grade.sh transforms"
     in_root bash -c 'cd /root/student/build/bin && ls' >"$results/student-built" 2>&1 || true
   else
-    for step in grade test; do
-      run_step "$step" "cd /root/gl-labs && scripts/$step.sh"
-    done
+    run_step grade "cd /root/gl-labs && scripts/grade.sh"
+    run_step test "cd /root/gl-labs && scripts/test.sh${FRESH_DEBIAN_TEST_ARGS:+ $FRESH_DEBIAN_TEST_ARGS}"
   fi
 
   # The disk the system took, the build and its tests' files with it.
@@ -306,7 +310,7 @@ esac
 
 if [ "$(id -u)" -ne 0 ]; then
   command -v sudo >/dev/null || die "needs root for debootstrap, chroot and mounts; run it as root"
-  exec sudo --preserve-env=FRESH_DEBIAN_MIRROR,FRESH_DEBIAN_DIR,FRESH_DEBIAN_CACHE,FRESH_DEBIAN_UNSHARE,CI,LAB_REQUIRE_BACKENDS,LAB_REQUIRE_CLANG_FORMAT,LAB_REQUIRE_BROWSER \
+  exec sudo --preserve-env=FRESH_DEBIAN_MIRROR,FRESH_DEBIAN_DIR,FRESH_DEBIAN_CACHE,FRESH_DEBIAN_UNSHARE,FRESH_DEBIAN_TEST_ARGS,CI,LAB_REQUIRE_BACKENDS,LAB_REQUIRE_CLANG_FORMAT,LAB_REQUIRE_BROWSER \
     bash "$0" "$@"
 fi
 
