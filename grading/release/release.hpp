@@ -88,7 +88,8 @@ std::vector<std::string> project_files(const std::string& source);
 // course's own tests and benchmarks, the unit checks' references
 // (labs/NN_name/grading/), the solution's records
 // (labs/NN_name/reference/*.record.json), CI, the staff README (the student README,
-// docs/student/README.md, takes its place), docs/performance.md and docs/cluster/.
+// docs/student/README.md, takes its place), the staff's guide (docs/staff.md),
+// docs/performance.md and docs/cluster/.
 bool is_staff_only(const std::string& rel);
 constexpr const char* kStudentReadme = "docs/student/README.md";
 

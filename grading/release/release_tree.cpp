@@ -165,8 +165,9 @@ bool is_staff_only(const std::string& rel) {
     if (kStaffFolders.count(parts[0]) || kStaffFiles.count(rel)) return true;
     // The seed of the course's random cases (grading/judge/course_seed.hpp).
     if (rel == kCourseSeedFile) return true;
-    // Grading a class on a cluster, and the staff's measurements.
-    if (rel == "docs/performance.md" ||
+    // The staff's guide, grading a class on a cluster, and the staff's
+    // measurements.
+    if (rel == "docs/staff.md" || rel == "docs/performance.md" ||
         (parts.size() >= 2 && parts[0] == "docs" && parts[1] == "cluster"))
         return true;
     // labs/NN_name/tests/ and labs/NN_name/grading/ (the references), and
