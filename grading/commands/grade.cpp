@@ -21,6 +21,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/commands/commands.hpp"
+#include "grading/commands/lab_shares.hpp"
 #include "grading/commands/lab_sources.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/course_seed.hpp"
@@ -298,21 +299,23 @@ std::vector<size_t> judge_not_built(const std::vector<LabData>& labs, const Grad
 
 // The labs of `labs` at `which`, each graded by a child into run.labs at the
 // same index: --jobs workers, each with one child for its share of them
-// (every jobs-th): one process start per worker, not per lab.
+// (shares(): the costliest first, to the least loaded): one process start per
+// worker, not per lab.
 void grade_in_children(const std::vector<LabData>& labs, const std::vector<size_t>& which,
                        const ChildSetup& setup, const GradeOptions& options, GradeRun& run) {
     std::mutex print_mutex;
     std::atomic<int> in_flight{0};
     const std::function<int()> threads = [&in_flight] { return judging_threads(in_flight); };
     const size_t workers = std::min<size_t>(which.size(), static_cast<size_t>(options.jobs));
+    const std::vector<std::vector<size_t>> share_of = shares(labs, which, workers);
     parallel_for(workers, options.jobs, [&](size_t w) {
         std::vector<const LabData*> share;
-        for (size_t i = w; i < which.size(); i += workers) share.push_back(&labs[which[i]]);
+        for (size_t k : share_of[w]) share.push_back(&labs[which[k]]);
         const InFlight flight(in_flight);
         std::vector<LabResult> results = grade_labs(share, setup, threads);
-        for (size_t k = 0; k < results.size(); ++k) {
-            LabResult& result = run.labs[which[w + k * workers]];
-            result = std::move(results[k]);
+        for (size_t j = 0; j < results.size(); ++j) {
+            LabResult& result = run.labs[which[share_of[w][j]]];
+            result = std::move(results[j]);
             if (!options.progress) continue;
             std::lock_guard<std::mutex> lock(print_mutex);
             print_progress(result);
