@@ -42,7 +42,7 @@ struct CheckpointFile {
     double hidden_points = 0.0;
     // The file's top-level "parts": where each of the sheet's parts is
     // written ([{"part": 4, "function": "back_to_front", "file": "labs/..."}]),
-    // raw; `course` reads it (grading/judge/starting_code.hpp).
+    // raw; `course` reads it (grading/diagnosis/starting_code.hpp).
     nlohmann::json parts = nlohmann::json::array();
 };
 

@@ -8,7 +8,7 @@
 //
 // The grading child records a checkpoint's render when its job asks
 // ("record": true, docs/contract.md); `course bless` keeps the solution's
-// records beside the reference images, and grading/judge/state_diff compares
+// records beside the reference images, and grading/diagnosis/state_diff compares
 // a student's with them draw by draw. So a record names no GL object by its
 // number: a program by its label (the shader files it was built from), a
 // buffer, texture, vertex array or framebuffer by its label, or, without

@@ -14,9 +14,9 @@
 #include "framework/error.hpp"
 #include "grading/commands/commands.hpp"
 #include "grading/commands/lab_sources.hpp"
+#include "grading/diagnosis/state_diff.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/course_seed.hpp"
-#include "grading/judge/state_diff.hpp"
 
 namespace grading {
 
@@ -86,7 +86,7 @@ int bless_command(const BlessOptions& options) {
         for (size_t i = 0; i < plan.renders.size(); ++i) {
             const std::string rel = lab.reference(plan.renders[i].checkpoint);
             fw::write_png(lab.root + "/" + rel, images[i]);
-            // What each draw was told, beside it (state_diff.hpp).
+            // What each draw was told, beside it (grading/diagnosis/state_diff.hpp).
             write_reference_record(lab, plan.renders[i].checkpoint, records[i]);
             std::printf("wrote %s (%dx%d, %s)\n", rel.c_str(), images[i].width, images[i].height,
                         backend.c_str());

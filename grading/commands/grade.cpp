@@ -23,10 +23,10 @@
 #include "grading/commands/commands.hpp"
 #include "grading/commands/lab_shares.hpp"
 #include "grading/commands/lab_sources.hpp"
+#include "grading/diagnosis/file_isolation.hpp"
+#include "grading/diagnosis/state_diff.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/course_seed.hpp"
-#include "grading/judge/file_isolation.hpp"
-#include "grading/judge/state_diff.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/platforms/compile_units.hpp"
 #include "grading/release/release.hpp"
@@ -227,11 +227,18 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
     run_lab_children(setup.lab_binary, jobs, setup.backend, setup.limits, setup.user, setup.cache,
                      ended);
     judging.finish();
-    // Which file is wrong, for a lab whose frames failed (file_isolation.hpp):
-    // once its child is done, so that a worker runs one child at a time.
+    // Which file is wrong, for a lab whose frames failed
+    // (grading/diagnosis/file_isolation.hpp): once its child is done, so that a
+    // worker runs one child at a time.
     const ChildSpawn spawn{setup.lab_binary, setup.backend, setup.limits, setup.user, setup.cache};
-    for (size_t i = 0; i < labs.size(); ++i)
-        if (ran[i]) isolate_shader_mistakes(*labs[i], plans[i], results[i].checks, spawn);
+    for (size_t i = 0; i < labs.size(); ++i) {
+        if (!ran[i]) continue;
+        // The judge's verdict on a frame rendered again.
+        const auto passes = [&](const std::string& checkpoint, const ChildOutputs& outputs) {
+            return frame_checks_pass(*labs[i], plans[i], checkpoint, outputs);
+        };
+        isolate_shader_mistakes(*labs[i], plans[i].job, passes, results[i].checks, spawn);
+    }
     return results;
 }
 

@@ -8,11 +8,10 @@
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/diagnosis/diagnosis.hpp"
 #include "grading/judge/cases.hpp"
 #include "grading/judge/check_where.hpp"
 #include "grading/judge/judge_buffer.hpp"
-#include "grading/judge/state_diff.hpp"
-#include "grading/judge/state_words.hpp"
 #include "grading/units/reference.hpp"
 
 namespace grading {
@@ -307,7 +306,7 @@ json render_entry(const LabData& lab, const fw::Checkpoint& cp, const std::vecto
     json entry = {{"name", cp.name}, {"params", cp.params}, {"width", width}, {"height", height},
                   {"depth", depth},  {"buffers", buffers},  {"usage", usage}};
     // "record": what each draw was told, for the state diff
-    // (state_diff.hpp): the solution's when blessing, a
+    // (grading/diagnosis/state_diff.hpp): the solution's when blessing, a
     // submission's where the checkpoint has the solution's.
     if (what == PlanFor::Blessing || has_reference_record(lab, cp.name)) entry["record"] = true;
     return entry;
@@ -332,13 +331,7 @@ void parse_checks(LabData& lab) {
         for (size_t i = 0; i < cp.checks.size(); ++i)
             lab.checks[k].push_back(parse_check(lab, cp, i, cp.checks[i], recorded));
     }
-    std::vector<std::string> names;
-    for (const fw::Checkpoint& cp : lab.file.checkpoints) names.push_back(cp.name);
-    lab.mistake_frames = read_mistake_frames(lab.root, lab.dir, names);
-    lab.parts = read_parts(lab.file);
-    lab.state_words = read_state_words(lab.root, lab.dir, lab.file);
-    check_part_places(lab.root, lab.file.path, lab.parts);
-    read_starting_file(lab.root, lab.dir, lab.parts);
+    read_diagnosis_files(lab);
 }
 
 LabPlan plan_lab(const LabData& lab, unsigned seed, PlanFor what) {

@@ -36,8 +36,7 @@
 
 #include "framework/checkpoints.hpp"
 #include "framework/image.hpp"
-#include "grading/judge/known_mistakes.hpp"
-#include "grading/judge/starting_code.hpp"
+#include "grading/diagnosis/diagnosis.hpp"
 #include "grading/results/results.hpp"
 #include "grading/run/child.hpp"
 #include "grading/run/repository.hpp"
@@ -113,8 +112,9 @@ struct PortableCheck {};
 
 // A state check has nothing to set either: it compares the render's record
 // of what each draw was told (NAME.record.json) with the solution's, which
-// `course bless` keeps with the checkpoint's image (state_diff.hpp), so a
-// state the sheet fixes is checked even where today's frames agree.
+// `course bless` keeps with the checkpoint's image
+// (grading/diagnosis/state_diff.hpp), so a state the sheet fixes is checked
+// even where today's frames agree.
 struct StateCheck {};
 
 struct Check {
@@ -130,24 +130,15 @@ struct Check {
     bool renders() const { return kind != CheckKind::Unit && kind != CheckKind::Forbidden; }
 };
 
-// A lab as course sees it: its folder and data file, never its code.
-struct LabData {
-    std::string id;       // the data file's "lab", e.g. "pipeline"
-    std::string dir;      // its folder under labs/, e.g. "00_pipeline"
-    std::string root;     // the repository (source_root())
-    std::string sources;  // the student's source files (sources_root(root))
-    fw::CheckpointFile file;
+// A lab as course sees it: its folder and data file, never its code. What
+// the diagnosis reads of it too (its folders, its checkpoints file, the
+// known mistakes' frames, the parts' places, the state words) is the
+// diagnosis's LabFiles (grading/diagnosis/lab_files.hpp).
+struct LabData : LabFiles {
     // Each checkpoint's checks and its visibility, parsed (parse_checks), in
     // the file's order.
     std::vector<std::vector<Check>> checks;
     std::vector<Visibility> visibility;
-    // The frames of mistakes the course knows, per checkpoint (known_mistakes.hpp).
-    MistakeFrames mistake_frames;
-    // Where the sheet's parts are written (the file's "parts", starting_code.hpp).
-    std::vector<PartPlace> parts;
-    // The sheet's words for the state diff (state_words.hpp), checked; null
-    // when the lab has none.
-    nlohmann::json state_words;
 
     // "labs/00_pipeline/reference/NAME.png", relative to root (for messages).
     std::string reference(const std::string& checkpoint) const;
@@ -162,9 +153,9 @@ std::vector<LabData> select_labs(const std::vector<LabData>& all,
 
 // Parses every check of the lab into lab.checks and each checkpoint's
 // visibility into lab.visibility, after loading the lab's
-// recorded unit cases where it has them (cases.json, cases.hpp), and the
-// places of the sheet's parts into lab.parts, with their starting hashes
-// where the lab has a starting file (starting.json, starting_code.hpp);
+// recorded unit cases where it has them (cases.json, cases.hpp), and then
+// reads what the diagnosis rests on (read_diagnosis_files: the known
+// mistakes' frames, the places of the sheet's parts, the state words);
 // throws fw::UsageError naming the file, the checkpoint, the check and the
 // field.
 void parse_checks(LabData& lab);
@@ -205,14 +196,25 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
 // programs that failed to build (child.json's "shader_errors"); else empty.
 std::string shader_error_status(const ChildOutputs& outputs);
 
-// Whether every check of `render`'s checkpoint that judges its frame (image,
-// probe, stat, buffer) passes on the frame in `outputs`, judged as
-// judge_lab judges it, writing no report file.
-bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const RenderPlan& render,
+// Whether every check of `checkpoint` that judges its frame (image, probe,
+// stat, buffer, portable) passes on the frame in `outputs`, judged as
+// judge_lab judges it, writing no report file; false for a checkpoint the
+// plan renders no frame of. File isolation asks it of the frames it renders
+// again (grading/diagnosis/file_isolation.hpp).
+bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const std::string& checkpoint,
                        const ChildOutputs& outputs);
 
+// A `state` check (StateCheck) of checkpoint `cp` into `r` (its points and
+// visibility set): passes where the child's record of the draws and the
+// reference record agree, else says the state diff's sentence
+// (state_difference); fails, saying to bless, without the checkpoint's
+// reference record (state_check.cpp).
+void judge_state(const LabData& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
+                 CheckResult& r);
+
 // Whether the lab's reference folder holds the course's records of the
-// solution's draws (a student's copy holds none: state_diff.hpp).
+// solution's draws (a student's copy holds none:
+// grading/diagnosis/state_diff.hpp).
 bool has_reference_records(const LabData& lab);
 
 // The state checks that a copy without those records leaves out (judge_lab

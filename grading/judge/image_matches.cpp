@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <set>
 #include <vector>
 
 #include "framework/error.hpp"
@@ -31,30 +30,6 @@ bool has_image_check(const LabData& lab, size_t k) {
     for (const Check& check : lab.checks.at(k))
         if (check.kind == CheckKind::Image) return true;
     return false;
-}
-
-std::string value_text(const nlohmann::json* value) {
-    if (!value) return "the default";
-    if (value->is_number_float()) return fw::number_text(value->get<double>(), 6);
-    return value->dump();
-}
-
-// The checkpoint's value of parameter `name`, or null for the lab's default.
-const nlohmann::json* param(const fw::Checkpoint& checkpoint, const std::string& name) {
-    return checkpoint.params.contains(name) ? &checkpoint.params.at(name) : nullptr;
-}
-
-// The names of the parameters whose values differ.
-std::vector<std::string> differences(const fw::Checkpoint& here, const fw::Checkpoint& there) {
-    std::set<std::string> names;
-    for (const auto& [name, value] : here.params.items()) names.insert(name);
-    for (const auto& [name, value] : there.params.items()) names.insert(name);
-    std::vector<std::string> out;
-    for (const std::string& name : names) {
-        const nlohmann::json *a = param(here, name), *b = param(there, name);
-        if (!(a && b && *a == *b)) out.push_back(name);
-    }
-    return out;
 }
 
 }  // namespace
@@ -117,33 +92,6 @@ bool ReferenceImages::matches(const std::string& relative, const fw::Image& fram
     // that are alike, not on one that fits inside the other.
     return e.image && close_summaries(mine, e.summary) &&
            fw::compare_images(frame, *e.image, verdict_only).passed;
-}
-
-std::string checkpoint_match_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
-                                      const std::string& other_name) {
-    const fw::Checkpoint* found = nullptr;
-    for (const fw::Checkpoint& c : lab.file.checkpoints)
-        if (c.name == other_name) found = &c;
-    if (!found) return "";
-    const fw::Checkpoint& other = *found;
-    const std::vector<std::string> differ = differences(checkpoint, other);
-    const std::string text = "Your frame is the one checkpoint " + other.name + " expects";
-    if (differ.empty())
-        return text + " (" + other.description + "): compare what the two checkpoints ask.";
-    if (differ.size() == 1) {
-        const std::string& name = differ.front();
-        const std::string here = value_text(param(checkpoint, name)),
-                          there = value_text(param(other, name));
-        return text + " (" + name + " " + there + ", here " + here +
-               "): your code most likely treats " + name + " " + here + " as " + there + ".";
-    }
-    std::vector<std::string> pairs;
-    for (const std::string& name : differ) {
-        const nlohmann::json *here = param(checkpoint, name), *there = param(other, name);
-        pairs.push_back(name + " (" + value_text(there) + " there, " + value_text(here) + " here)");
-    }
-    return text + ", which differs from " + checkpoint.name + " in " + fw::join(pairs, ", ") +
-           ": your code most likely ignores these parameters or mixes them up.";
 }
 
 namespace {

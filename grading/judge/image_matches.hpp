@@ -4,9 +4,12 @@
 // checkpoint what it should do for the other one: lab 1's `trs` drawn in the
 // order of `srt`, a camera that ignores `fov`. The report says so in one
 // sentence, with the parameters in which the two checkpoints differ. A frame
-// that matches the frame of a mistake the course knows (known_mistakes.hpp)
-// is named too. Frames match when they pass the comparison, which runs both
-// ways.
+// that matches the frame of a mistake the course knows
+// (grading/diagnosis/known_mistakes.hpp) is named too. Frames match when they
+// pass the comparison, which runs both ways. The matching is here, beside
+// the image check whose comparison it runs again; the sentences, and the
+// weighing of a match against the evidence, are the diagnosis's
+// (grading/diagnosis/frame_guesses.hpp).
 #pragma once
 
 #include <map>
@@ -16,8 +19,8 @@
 
 #include "framework/checkpoints.hpp"
 #include "framework/image.hpp"
+#include "grading/diagnosis/diagnosis.hpp"
 #include "grading/judge/checks.hpp"
-#include "grading/judge/known_mistakes.hpp"
 
 namespace grading {
 
@@ -62,7 +65,7 @@ private:
 // What a frame of `checkpoint` that fails its own reference matches under
 // `options`: the frame of a mistake the course knows (null when none), and
 // the first other checkpoint of the lab with an image check whose reference
-// it matches ("" when none). Guesses, which frame_guesses.hpp weighs
+// it matches ("" when none). Guesses, which grading/diagnosis/frame_guesses.hpp weighs
 // against the evidence before anything is said.
 struct FrameMatches {
     const MistakeFrame* mistake = nullptr;
@@ -71,13 +74,6 @@ struct FrameMatches {
 FrameMatches failed_frame_matches(const LabData& lab, const fw::Checkpoint& checkpoint,
                                   const fw::Image& frame, const fw::CompareOptions& options,
                                   ReferenceImages& references);
-
-// "Your frame is the one checkpoint OTHER expects (P there, here Q): your
-// code most likely treats P Q as there." for a frame of `checkpoint` that is
-// the expected frame of checkpoint `other`, with the parameters in which
-// the two differ; "" when the lab has no checkpoint `other`.
-std::string checkpoint_match_sentence(const LabData& lab, const fw::Checkpoint& checkpoint,
-                                      const std::string& other);
 
 // The sentence for a frame of `checkpoint` that fails its own reference
 // under `options`: the first other checkpoint of the lab with an image check

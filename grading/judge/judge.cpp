@@ -14,17 +14,15 @@
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/diagnosis/diagnosis.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/frame.hpp"
-#include "grading/judge/frame_guesses.hpp"
 #include "grading/judge/image_matches.hpp"
-#include "grading/judge/image_words.hpp"
 #include "grading/judge/judge_buffer.hpp"
 #include "grading/judge/judge_portable.hpp"
 #include "grading/judge/judge_source.hpp"
 #include "grading/judge/judge_unit.hpp"
 #include "grading/judge/judge_values.hpp"
-#include "grading/judge/state_diff.hpp"
 #include "grading/run/parallel.hpp"
 
 namespace grading {
@@ -50,8 +48,8 @@ void note_matches(const LabData& lab, const fw::Checkpoint& cp, const fw::Image&
 }
 
 // `starting`: the sentence that a part the checkpoint needs still has its
-// starting code (starting_code.hpp), said in place of the frame's matches,
-// which a missing part's frame is no evidence of.
+// starting code (grading/diagnosis/starting_code.hpp), said in place of the
+// frame's matches, which a missing part's frame is no evidence of.
 void judge_image(const LabData& lab, const fw::Checkpoint& cp, const ImageCheck& check,
                  Frame& frame, const std::string& out_dir, ReferenceImages& references,
                  const std::string& starting, CheckResult& r) {
@@ -195,21 +193,6 @@ void judge_check(LabInputs& in, size_t k, size_t i, const RenderPlan* render, Fr
     }
 }
 
-// A failed checkpoint whose needed part still has its starting code says so
-// once, under its first failed check, where no check has said it.
-void say_starting(const std::string& starting, std::vector<CheckResult>& results) {
-    if (starting.empty()) return;
-    CheckResult* first = nullptr;
-    for (CheckResult& r : results) {
-        if (r.passed) continue;
-        if (r.diagnosis.find(starting) != std::string::npos) return;
-        if (!first) first = &r;
-    }
-    if (!first) return;
-    first->diagnosis = first->diagnosis.empty() ? starting : starting + "\n" + first->diagnosis;
-    first->output += "\n" + starting;
-}
-
 // What this grading wrote into the lab's folder (its frames, and its
 // checks' expected and difference images) stays; what an earlier one left
 // there beside it goes.
@@ -229,21 +212,24 @@ void keep_written(const std::string& dir, const std::vector<std::string>& render
 
 }  // namespace
 
-bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const RenderPlan& render,
+bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const std::string& checkpoint,
                        const ChildOutputs& outputs) {
     LabInputs in{lab, plan, outputs, "", json(), "", ReferenceImages(lab)};
+    const auto render =
+        std::find_if(plan.renders.begin(), plan.renders.end(),
+                     [&](const RenderPlan& r) { return r.checkpoint == checkpoint; });
     const auto& checkpoints = lab.file.checkpoints;
     const auto k = static_cast<size_t>(
         std::find_if(checkpoints.begin(), checkpoints.end(),
-                     [&](const fw::Checkpoint& cp) { return cp.name == render.checkpoint; }) -
+                     [&](const fw::Checkpoint& cp) { return cp.name == checkpoint; }) -
         checkpoints.begin());
-    if (k == checkpoints.size()) return false;
-    Frame frame(outputs, render, lab.id, "");
+    if (render == plan.renders.end() || k == checkpoints.size()) return false;
+    Frame frame(outputs, *render, lab.id, "");
     for (size_t i = 0; i < lab.checks.at(k).size(); ++i) {
         // The frame's own checks: a state check reads no frame.
         if (!lab.checks[k][i].renders() || lab.checks[k][i].kind == CheckKind::State) continue;
         CheckResult result;
-        judge_check(in, k, i, &render, &frame, "", result);
+        judge_check(in, k, i, &*render, &frame, "", result);
         if (!result.passed) return false;
     }
     return true;
@@ -279,7 +265,7 @@ std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
             judged.push_back(std::move(by_checkpoint[k][i]));
         }
         by_checkpoint[k] = std::move(judged);
-        say_starting(starting, by_checkpoint[k]);
+        say_starting_code(starting, by_checkpoint[k]);
         if (frame) add_state_diff(lab, checkpoints[k], outputs, by_checkpoint[k]);
         if (frame) {
             frame->publish();

@@ -37,9 +37,9 @@ bool read_buffers(const ChildOutputs& outputs, const std::string& checkpoint,
                   std::vector<fw::LabBuffer>& buffers, std::string& why);
 
 // The check against `buffers` (null when they could not be read: `why`).
-// `starting`, when not empty, says that a part the checkpoint needs still
-// has its starting code (starting_code.hpp): a failing check says it in
-// place of a known mistake, which such a buffer is no evidence of.
+// `starting`, when not empty, says that a part the checkpoint needs still has
+// its starting code (grading/diagnosis/starting_code.hpp): a failing check says
+// it in place of a known mistake, which such a buffer is no evidence of.
 void judge_buffer(const BufferCheck& check, const std::vector<fw::LabBuffer>* buffers,
                   const std::string& why, CheckResult& r, const std::string& starting = "");
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "framework/text.hpp"
+#include "grading/diagnosis/diagnosis.hpp"
 
 namespace grading {
 
@@ -17,53 +18,7 @@ bool is_name_char(char c) {
            c == ':';
 }
 
-// Blanks text[from, to) but its newlines.
-void blank(std::string& text, size_t from, size_t to) {
-    for (size_t i = from; i < to && i < text.size(); ++i)
-        if (text[i] != '\n') text[i] = ' ';
-}
-
-// The end of the literal that starts with the quote at `i` (past its closing
-// quote, or the end of the line where it is not closed).
-size_t literal_end(const std::string& t, size_t i) {
-    const char quote = t[i];
-    for (size_t j = i + 1; j < t.size(); ++j) {
-        if (t[j] == '\\') {
-            ++j;
-            continue;
-        }
-        if (t[j] == quote || t[j] == '\n') return j + 1;
-    }
-    return t.size();
-}
-
 }  // namespace
-
-std::string code_only(const std::string& text) {
-    std::string t = text;
-    for (size_t i = 0; i < t.size();) {
-        if (t.compare(i, 2, "//") == 0) {
-            const size_t end = t.find('\n', i);
-            blank(t, i, end == std::string::npos ? t.size() : end);
-            i = end == std::string::npos ? t.size() : end;
-        } else if (t.compare(i, 2, "/*") == 0) {
-            const size_t close = t.find("*/", i + 2);
-            const size_t end = close == std::string::npos ? t.size() : close + 2;
-            blank(t, i, end);
-            i = end;
-        } else if (t[i] == '"' ||
-                   (t[i] == '\'' &&
-                    !(i > 0 && std::isxdigit(static_cast<unsigned char>(t[i - 1]))))) {
-            // (A ' after a digit separates digits: 1'000.)
-            const size_t end = literal_end(t, i);
-            blank(t, i, end);
-            i = end;
-        } else {
-            ++i;
-        }
-    }
-    return t;
-}
 
 std::vector<int> lines_using(const std::string& text, const std::string& name) {
     const std::string code = code_only(text);

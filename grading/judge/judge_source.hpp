@@ -11,13 +11,9 @@
 
 namespace grading {
 
-// `text` (C++ or GLSL) with its comments and string and character literals
-// blanked out, so that only code is searched; every newline is kept, so line
-// numbers stay the same.
-std::string code_only(const std::string& text);
-
-// The 1-based lines where `name` occurs in the code of `text` as a whole
-// name: not inside a longer identifier ("glm::translate" is found in
+// The 1-based lines where `name` occurs in the code of `text` (its comments
+// and literals left out: code_only, grading/diagnosis/starting_code.hpp) as a
+// whole name: not inside a longer identifier ("glm::translate" is found in
 // "glm::translate(M, t)", not in "glm::translateX" or "my_glm::translate").
 std::vector<int> lines_using(const std::string& text, const std::string& name);
 

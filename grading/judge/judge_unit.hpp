@@ -18,9 +18,9 @@ namespace grading {
 
 // One unit check of `lab`: `units` is the child's units.json (null when it
 // could not be read, `units_why` saying why). `starting`, when not empty, is
-// the sentence saying that a part the checkpoint needs still has its
-// starting code (starting_code.hpp): a failing check says it in place of
-// the mistakes it would name, which such a result is no evidence of.
+// the sentence saying that a part the checkpoint needs still has its starting
+// code (grading/diagnosis/starting_code.hpp): a failing check says it in place
+// of the mistakes it would name, which such a result is no evidence of.
 void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan, unsigned seed,
                 const nlohmann::json* units, const std::string& units_why, CheckResult& r,
                 const std::string& starting = "");

@@ -1,9 +1,10 @@
 // The `state` check (checks.hpp, StateCheck): the render's record of the
-// draws against the solution's (state_diff.hpp).
+// draws against the solution's, by the state diff's sentence
+// (grading/diagnosis/state_diff.hpp).
 #include <nlohmann/json.hpp>
 
+#include "grading/diagnosis/diagnosis.hpp"
 #include "grading/judge/checks.hpp"
-#include "grading/judge/state_diff.hpp"
 
 namespace grading {
 

@@ -26,7 +26,7 @@
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
-#include "grading/judge/file_isolation.hpp"
+#include "grading/diagnosis/file_isolation.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/platforms/compile_units.hpp"
 #include "grading/platforms/run_logged.hpp"
@@ -165,13 +165,13 @@ private:
         if (geteuid() == 0 && chown(results_.c_str(), 0, 0) == 0) chmod(results_.c_str(), 0755);
     }
 
-    // What only course may read, kept from the user before any submitted
-    // code runs: the course's text of the student shaders (file_isolation.hpp),
-    // and PrairieLearn's data folder, which PrairieLearn brings with each job
-    // to /grade, where the user may read. Course grades with a copy of the
-    // data in the work directory, which only root may enter (Gradescope's
-    // setup.sh protects its own tree); `course grade --run-as` then checks
-    // that the user cannot read the references.
+    // What only course may read, kept from the user before any submitted code runs:
+    // the course's text of the student shaders
+    // (grading/diagnosis/file_isolation.hpp), and PrairieLearn's data folder, which
+    // PrairieLearn brings with each job to /grade, where the user may read. Course
+    // grades with a copy of the data in the work directory, which only root may
+    // enter (Gradescope's setup.sh protects its own tree); `course grade --run-as`
+    // then checks that the user cannot read the references.
     void private_data() {
         if (!as_user_) return;
         const RunAsUser user = lookup_user(options_.user);
@@ -284,7 +284,7 @@ private:
 
     // With one worker (no --jobs): no lab's own child, whose log reaches the
     // results, runs beside a child given the course's text of a shader
-    // (file_isolation.hpp).
+    // (grading/diagnosis/file_isolation.hpp).
     void grade() {
         std::vector<std::string> command = {own_path(),  "grade",
                                             "--lab",     lab_.string(),

@@ -43,8 +43,8 @@ void write_student_files(const StudentFiles& students, const std::filesystem::pa
 // Writes DEST/solution_shaders/NN_name/FILE: the course's own text (from
 // `source`) of each student file shaders/NN_name/FILE of `students`, which
 // `course grade` puts in place of the student's to tell which file is wrong
-// (file_isolation.hpp) where the student's replace the course's. Returns how
-// many it wrote.
+// (grading/diagnosis/file_isolation.hpp) where the student's replace the
+// course's. Returns how many it wrote.
 size_t write_solution_shaders(const StudentFiles& students, const std::filesystem::path& source,
                               const std::filesystem::path& dest);
 

@@ -1,5 +1,5 @@
 // `course release`, the text: hidden checkpoints in checkpoints files
-// (release.hpp; the release markers' text: grading/judge/solution_blocks.cpp).
+// (release.hpp; the release markers' text: grading/diagnosis/solution_blocks.cpp).
 #include "grading/release/release.hpp"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // release`). The text transformations are pure functions of a file's text, so
 // they are tested without files; release_tree() applies them to a tree.
 //
-// Release markers (grading/judge/solution_blocks.hpp, which judging reads
+// Release markers (grading/diagnosis/solution_blocks.hpp, which judging reads
 // too): a solution block's student version is its STUDENT lines.
 #pragma once
 
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "grading/diagnosis/solution_blocks.hpp"
 #include "grading/judge/checks.hpp"
-#include "grading/judge/solution_blocks.hpp"
 
 namespace grading {
 
@@ -65,8 +65,9 @@ struct ReleaseSummary {
     std::vector<std::string> untracked;            // not tracked by git: never released
     std::size_t staff_only = 0;                    // staff files left out (is_staff_only)
     std::vector<std::pair<std::string, std::size_t>> cases;  // cases.json written -> bytes
-    std::vector<std::string> starting;  // starting.json written (grading/judge/starting_code.hpp)
-    std::size_t classroom_labs = 0;     // labs in kGitHubClassroomWorkflow, when written
+    std::vector<std::string>
+        starting;                    // starting.json written (grading/diagnosis/starting_code.hpp)
+    std::size_t classroom_labs = 0;  // labs in kGitHubClassroomWorkflow, when written
 };
 
 // The recorded unit cases a release writes: at most this many random cases

@@ -13,9 +13,9 @@
 #include "framework/checkpoints.hpp"
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/diagnosis/starting_code.hpp"
 #include "grading/judge/cases.hpp"
 #include "grading/judge/course_seed.hpp"
-#include "grading/judge/starting_code.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"
 
@@ -75,7 +75,7 @@ Planned plan_file(const fs::path& root, const std::string& rel, ReleasePlan& pla
 // as data in the lab's grading/ folder. cases.json: its visible unit
 // checks' cases and course's results (grading/judge/cases.hpp).
 // starting.json: a hash of each part's starting code, so that a part still
-// as released is known there (grading/judge/starting_code.hpp).
+// as released is known there (grading/diagnosis/starting_code.hpp).
 void plan_lab_data(const fs::path& root, const std::vector<std::string>& tracked, ReleasePlan& plan,
                    ReleaseSummary& summary) {
     for (LabData& lab : discover_labs(root.string())) {

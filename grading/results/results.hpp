@@ -42,7 +42,7 @@ struct CheckResult {
     // where the check has none.
     std::string rendered, expected, difference;
     // A failed image check's frame as the course knows it, before and after
-    // the evidence is weighed (grading/judge/frame_guesses.hpp).
+    // the evidence is weighed (grading/diagnosis/frame_guesses.hpp).
     struct FrameGuess {
         // The known mistakes' frame it matches (its image under
         // reference/mistakes/) and the other checkpoint whose expected frame

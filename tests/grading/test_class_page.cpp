@@ -16,7 +16,7 @@
 
 #include "grading/class/class_findings.hpp"
 #include "grading/class/class_page.hpp"
-#include "grading/judge/solution_blocks.hpp"
+#include "grading/diagnosis/solution_blocks.hpp"
 #include "tests/grading/grade_support.hpp"
 #include "tests/mistakes/mistakes.hpp"
 #include "tests/support/browser.hpp"

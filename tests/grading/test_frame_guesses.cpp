@@ -1,5 +1,5 @@
 // Guesses from a matching frame weighed against the evidence
-// (grading/judge/frame_guesses.hpp): for each kind of evidence (unit checks,
+// (grading/diagnosis/frame_guesses.hpp): for each kind of evidence (unit checks,
 // the state diff, file isolation, the records for another checkpoint's
 // frame), a guess it lets through and one it must rule out. The lab is a copy
 // of lab 1's data with one known mistake's frame for `trs`; the results are
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "framework/image.hpp"
+#include "grading/diagnosis/frame_guesses.hpp"
+#include "grading/diagnosis/known_mistakes.hpp"
 #include "grading/judge/checks.hpp"
-#include "grading/judge/frame_guesses.hpp"
-#include "grading/judge/known_mistakes.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace {

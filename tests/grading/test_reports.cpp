@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "framework/image.hpp"
+#include "grading/diagnosis/image_words.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/image_matches.hpp"
-#include "grading/judge/image_words.hpp"
 #include "grading/report/by_checkpoint.hpp"
 #include "grading/report/prairielearn_results.hpp"
 #include "grading/report/report_text.hpp"

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "framework/image.hpp"
+#include "grading/diagnosis/solution_blocks.hpp"
+#include "grading/diagnosis/starting_code.hpp"
 #include "grading/judge/checks.hpp"
-#include "grading/judge/solution_blocks.hpp"
-#include "grading/judge/starting_code.hpp"
 #include "grading/run/child.hpp"
 #include "grading/units/reference.hpp"
 #include "tests/support/test_support.hpp"

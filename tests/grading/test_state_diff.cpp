@@ -1,4 +1,4 @@
-// grading/judge/state_diff: records made on a real context, a reference and
+// grading/diagnosis/state_diff: records made on a real context, a reference and
 // a planted state mistake of labs 7-10, and the sentence that names it: the
 // draw, the call and its argument, the student's value, the sheet's words,
 // and the reference's value only for a hidden checkpoint. What cannot change
@@ -8,9 +8,9 @@
 
 #include <filesystem>
 
+#include "grading/diagnosis/state_diff.hpp"
+#include "grading/diagnosis/state_words.hpp"
 #include "grading/judge/checks.hpp"
-#include "grading/judge/state_diff.hpp"
-#include "grading/judge/state_words.hpp"
 #include "tests/framework/record_scene.hpp"
 #include "tests/support/test_support.hpp"
 

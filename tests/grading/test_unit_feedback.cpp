@@ -18,6 +18,7 @@
 
 #include "framework/json_glm.hpp"
 #include "framework/names.hpp"
+#include "grading/diagnosis/starting_code.hpp"
 #include "grading/judge/judge_source.hpp"
 #include "grading/judge/judge_unit.hpp"
 #include "grading/units/mistakes.hpp"

@@ -1,7 +1,7 @@
 // The frames the mistake suite keeps for the grader: with MISTAKES_RECORD=1,
 // every frame of a mistake that fails a visible checkpoint's image check
 // (at most kFramesPerMistake per mistake, in the sheet's order) goes to
-// labs/NN_name/reference/mistakes/ (grading/judge/known_mistakes.hpp), where
+// labs/NN_name/reference/mistakes/ (grading/diagnosis/known_mistakes.hpp), where
 // `course grade` names a student's frame that matches one.
 #pragma once
 

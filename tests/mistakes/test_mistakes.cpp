@@ -8,7 +8,7 @@
 // that is another checkpoint's expected image); any other that fails a
 // visible image check by its own id, as the known mistake whose frame the
 // student's frame is ("Your frame is the one a known mistake draws (ID)",
-// grading/judge/known_mistakes.hpp). A shader file the grader names as the
+// grading/diagnosis/known_mistakes.hpp). A shader file the grader names as the
 // one that holds the mistake (docs/contract.md, Which file is wrong) must be
 // the mistake's own, and a mistake in C++ names none. The table counts the
 // named ones, and
@@ -35,7 +35,7 @@
 // incrementally per mistake.
 //
 // A mistake in the GL state a draw is told may say "state": the words the
-// state diff (grading/judge/state_diff.hpp) must print for it, from the
+// state diff (grading/diagnosis/state_diff.hpp) must print for it, from the
 // records of the draws (named by evidence); the table counts those apart
 // from the mistakes named by their frame or kind.
 //
@@ -232,7 +232,7 @@ std::vector<std::string> failed_units(const Grade& g, const std::string& lab) {
 }
 
 // Per checkpoint of lab `lab`, the state diff's sentence in `g`'s outputs
-// (grading/judge/state_diff.hpp: "Draw 2 of scene `x`: ...", "scene `x`:
+// (grading/diagnosis/state_diff.hpp: "Draw 2 of scene `x`: ...", "scene `x`:
 // your Draw 3 ...", under a failed frame check or as a state check's
 // Observed line); none where the records agree.
 std::map<std::string, std::string> state_sentences(const Grade& g, const std::string& lab) {

@@ -2,7 +2,7 @@
 // the built `lab` reads LAB_SHADER_DIR), whose frame is the frame of a
 // mistake the course knows: the grader must not name the known mistake, and
 // must say why it is not that one, from this submission's own evidence
-// (grading/judge/frame_guesses.hpp). Each plant is graded with `course
+// (grading/diagnosis/frame_guesses.hpp). Each plant is graded with `course
 // grade` on the backend of the test (LAB_BACKEND).
 #include <filesystem>
 #include <string>

@@ -1,5 +1,6 @@
 // The repository's layout, read from its files (no build, no GL): grading's rooms include only
-// rooms below them, framework and grading headers include no cycle, every repository path and
+// rooms below them, and the judge of the diagnosis only its interface (diagnosis.hpp);
+// framework and grading headers include no cycle, every repository path and
 // docs section that a comment or a Markdown page cites exists, functions and files keep to
 // the sizes of docs/conventions.md; a lab's files with student parts neither register the
 // lab nor include nlohmann/json.hpp; and each lab sheet's parts and Files: list name the files
@@ -50,8 +51,12 @@ namespace fs = std::filesystem;
 namespace {
 
 // grading's rooms, lowest floor first: a room includes only itself and the rooms below.
-const std::vector<std::string> kRooms = {"sandbox", "results", "run",       "units",    "judge",
-                                         "report",  "release", "platforms", "commands", "class"};
+const std::vector<std::string> kRooms = {"sandbox",   "results",  "run",    "units",
+                                         "diagnosis", "judge",    "report", "release",
+                                         "platforms", "commands", "class"};
+// The one header of grading/diagnosis/ that grading/judge/ includes: the judge
+// reads the diagnosis through it alone (docs/architecture.md).
+const std::string kDiagnosisInterface = "grading/diagnosis/diagnosis.hpp";
 // The lab that README's "Adding a lab" makes, in a copy of the tree only
 // (tests/tools/test_new_lab.cpp).
 const std::string kNewLab = "90_warmup";
@@ -148,6 +153,22 @@ std::vector<Problem> room_problems(const Repo& repo) {
                                           ", which is above it; move what it needs down into " +
                                           room + " or a room below"});
         }
+    }
+    return out;
+}
+
+// The includes of grading/judge/ into grading/diagnosis/ other than its interface.
+std::vector<Problem> interface_problems(const Repo& repo, size_t& judge_files) {
+    std::vector<Problem> out;
+    for (const std::string& f : repo.files) {
+        if (!starts_with(f, "grading/judge/")) continue;
+        ++judge_files;
+        for (const auto& [line, inc] : quoted_includes(repo.root / f))
+            if (starts_with(inc, "grading/diagnosis/") && inc != kDiagnosisInterface)
+                out.push_back({f + ":" + std::to_string(line),
+                               "the judge includes \"" + inc + "\"; it reads the diagnosis only " +
+                                   "through \"" + kDiagnosisInterface +
+                                   "\": include that, and add there what the judge needs"});
     }
     return out;
 }
@@ -833,10 +854,22 @@ void report(const std::vector<Problem>& problems) {
 
 TEST_CASE("grading's rooms include only their own room and the rooms below it") {
     MESSAGE(
-        "rooms, lowest first: sandbox results run units judge report release platforms "
-        "commands; grading/main.cpp includes any; labs/NN_name/grading/*.cpp only units");
+        "rooms, lowest first: sandbox results run units diagnosis judge report release "
+        "platforms commands class; grading/main.cpp includes any; labs/NN_name/grading/*.cpp "
+        "only units");
     REQUIRE(repo().files.size() > 100);
     report(room_problems(repo()));
+}
+
+TEST_CASE("the judge includes of the diagnosis only its interface, diagnosis.hpp") {
+    size_t judge_files = 0;
+    const std::vector<Problem> problems = interface_problems(repo(), judge_files);
+    MESSAGE(judge_files << " files of grading/judge/; its door into grading/diagnosis/: "
+                        << kDiagnosisInterface);
+    CHECK(judge_files > 10);
+    CHECK(std::find(repo().files.begin(), repo().files.end(), kDiagnosisInterface) !=
+          repo().files.end());
+    report(problems);
 }
 
 TEST_CASE("the GL wrapper students read names nothing of what observes it") {

@@ -27,8 +27,8 @@
 
 #include "framework/error.hpp"
 #include "framework/text.hpp"
+#include "grading/diagnosis/file_isolation.hpp"
 #include "grading/judge/checks.hpp"
-#include "grading/judge/file_isolation.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"

@@ -22,10 +22,10 @@
 #include <vector>
 
 #include "framework/error.hpp"
+#include "grading/diagnosis/file_isolation.hpp"
 #include "grading/judge/cases.hpp"
 #include "grading/judge/checks.hpp"
 #include "grading/judge/course_seed.hpp"
-#include "grading/judge/file_isolation.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/release/release.hpp"
 #include "grading/run/repository.hpp"

@@ -1,9 +1,10 @@
-#include "grading/judge/frame_guesses.hpp"
+#include "grading/diagnosis/frame_guesses.hpp"
 
 #include <algorithm>
+#include <set>
 
-#include "grading/judge/image_matches.hpp"
-#include "grading/judge/known_mistakes.hpp"
+#include "framework/text.hpp"
+#include "grading/diagnosis/known_mistakes.hpp"
 
 namespace grading {
 
@@ -51,7 +52,7 @@ void append_line(std::string& text, const std::string& line) {
     text += (text.empty() ? "" : "\n") + line;
 }
 
-const MistakeFrame* frame_named(const LabData& lab, const std::string& checkpoint,
+const MistakeFrame* frame_named(const LabFiles& lab, const std::string& checkpoint,
                                 const std::string& image) {
     const auto known = lab.mistake_frames.find(checkpoint);
     if (known == lab.mistake_frames.end()) return nullptr;
@@ -60,7 +61,7 @@ const MistakeFrame* frame_named(const LabData& lab, const std::string& checkpoin
     return nullptr;
 }
 
-const fw::Checkpoint* checkpoint_named(const LabData& lab, const std::string& name) {
+const fw::Checkpoint* checkpoint_named(const LabFiles& lab, const std::string& name) {
     for (const fw::Checkpoint& cp : lab.file.checkpoints)
         if (cp.name == name) return &cp;
     return nullptr;
@@ -71,7 +72,59 @@ std::string file_name(const std::string& path) {
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+// A parameter's value as the sentence shows it.
+std::string value_text(const nlohmann::json* value) {
+    if (!value) return "the default";
+    if (value->is_number_float()) return fw::number_text(value->get<double>(), 6);
+    return value->dump();
+}
+
+// The checkpoint's value of parameter `name`, or null for the lab's default.
+const nlohmann::json* param(const fw::Checkpoint& checkpoint, const std::string& name) {
+    return checkpoint.params.contains(name) ? &checkpoint.params.at(name) : nullptr;
+}
+
+// The names of the parameters whose values differ.
+std::vector<std::string> differences(const fw::Checkpoint& here, const fw::Checkpoint& there) {
+    std::set<std::string> names;
+    for (const auto& [name, value] : here.params.items()) names.insert(name);
+    for (const auto& [name, value] : there.params.items()) names.insert(name);
+    std::vector<std::string> out;
+    for (const std::string& name : names) {
+        const nlohmann::json *a = param(here, name), *b = param(there, name);
+        if (!(a && b && *a == *b)) out.push_back(name);
+    }
+    return out;
+}
+
 }  // namespace
+
+std::string checkpoint_match_sentence(const LabFiles& lab, const fw::Checkpoint& checkpoint,
+                                      const std::string& other_name) {
+    const fw::Checkpoint* found = nullptr;
+    for (const fw::Checkpoint& c : lab.file.checkpoints)
+        if (c.name == other_name) found = &c;
+    if (!found) return "";
+    const fw::Checkpoint& other = *found;
+    const std::vector<std::string> differ = differences(checkpoint, other);
+    const std::string text = "Your frame is the one checkpoint " + other.name + " expects";
+    if (differ.empty())
+        return text + " (" + other.description + "): compare what the two checkpoints ask.";
+    if (differ.size() == 1) {
+        const std::string& name = differ.front();
+        const std::string here = value_text(param(checkpoint, name)),
+                          there = value_text(param(other, name));
+        return text + " (" + name + " " + there + ", here " + here +
+               "): your code most likely treats " + name + " " + here + " as " + there + ".";
+    }
+    std::vector<std::string> pairs;
+    for (const std::string& name : differ) {
+        const nlohmann::json *here = param(checkpoint, name), *there = param(other, name);
+        pairs.push_back(name + " (" + value_text(there) + " there, " + value_text(here) + " here)");
+    }
+    return text + ", which differs from " + checkpoint.name + " in " + fw::join(pairs, ", ") +
+           ": your code most likely ignores these parameters or mixes them up.";
+}
 
 std::string ruled_out(const KnownMistake& mistake, const CheckResult::FrameGuess& guess,
                       const std::map<std::string, bool>& unit_passes,
@@ -112,7 +165,7 @@ std::string ruled_out(const KnownMistake& mistake, const CheckResult::FrameGuess
     return "";
 }
 
-void say_frame_guesses(const LabData& lab, std::vector<CheckResult>& results,
+void say_frame_guesses(const LabFiles& lab, std::vector<CheckResult>& results,
                        const FrameIsolations* isolations) {
     const std::map<std::string, bool> units = unit_passes(results);
     bool unit_fails = false;

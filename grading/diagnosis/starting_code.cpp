@@ -1,4 +1,4 @@
-#include "grading/judge/starting_code.hpp"
+#include "grading/diagnosis/starting_code.hpp"
 
 #include <cctype>
 #include <cstdint>
@@ -8,8 +8,7 @@
 #include <sstream>
 
 #include "framework/error.hpp"
-#include "grading/judge/judge_source.hpp"
-#include "grading/judge/solution_blocks.hpp"
+#include "grading/diagnosis/solution_blocks.hpp"
 
 namespace grading {
 
@@ -61,7 +60,53 @@ std::string squeezed(const std::string& code) {
 
 bool has_blocks(const std::string& text) { return text.find(kBeginMarker) != std::string::npos; }
 
+// Blanks text[from, to) but its newlines.
+void blank(std::string& text, size_t from, size_t to) {
+    for (size_t i = from; i < to && i < text.size(); ++i)
+        if (text[i] != '\n') text[i] = ' ';
+}
+
+// The end of the literal that starts with the quote at `i` (past its closing
+// quote, or the end of the line where it is not closed).
+size_t literal_end(const std::string& t, size_t i) {
+    const char quote = t[i];
+    for (size_t j = i + 1; j < t.size(); ++j) {
+        if (t[j] == '\\') {
+            ++j;
+            continue;
+        }
+        if (t[j] == quote || t[j] == '\n') return j + 1;
+    }
+    return t.size();
+}
+
 }  // namespace
+
+std::string code_only(const std::string& text) {
+    std::string t = text;
+    for (size_t i = 0; i < t.size();) {
+        if (t.compare(i, 2, "//") == 0) {
+            const size_t end = t.find('\n', i);
+            blank(t, i, end == std::string::npos ? t.size() : end);
+            i = end == std::string::npos ? t.size() : end;
+        } else if (t.compare(i, 2, "/*") == 0) {
+            const size_t close = t.find("*/", i + 2);
+            const size_t end = close == std::string::npos ? t.size() : close + 2;
+            blank(t, i, end);
+            i = end;
+        } else if (t[i] == '"' ||
+                   (t[i] == '\'' &&
+                    !(i > 0 && std::isxdigit(static_cast<unsigned char>(t[i - 1]))))) {
+            // (A ' after a digit separates digits: 1'000.)
+            const size_t end = literal_end(t, i);
+            blank(t, i, end);
+            i = end;
+        } else {
+            ++i;
+        }
+    }
+    return t;
+}
 
 std::vector<PartPlace> read_parts(const fw::CheckpointFile& file) {
     std::vector<PartPlace> places;
@@ -217,6 +262,19 @@ std::string starting_code_sentence(const std::string& root, const std::string& s
                 return "Part " + std::to_string(n) + " (`" + p.function + "()` in " + p.file +
                        ") still has its starting code; this checkpoint needs it.";
     return "";
+}
+
+void say_starting_code(const std::string& sentence, std::vector<CheckResult>& results) {
+    if (sentence.empty()) return;
+    CheckResult* first = nullptr;
+    for (CheckResult& r : results) {
+        if (r.passed) continue;
+        if (r.diagnosis.find(sentence) != std::string::npos) return;
+        if (!first) first = &r;
+    }
+    if (!first) return;
+    first->diagnosis = first->diagnosis.empty() ? sentence : sentence + "\n" + first->diagnosis;
+    first->output += "\n" + sentence;
 }
 
 void check_part_places(const std::string& root, const std::string& checkpoints_file,

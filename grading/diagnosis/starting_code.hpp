@@ -7,10 +7,10 @@
 //
 // (a part written in several functions has an entry for each). A function
 // still holds its starting code when its body in the student's file
-// (LabData::sources) is the body of the file's starting version, comments
+// (LabFiles::sources) is the body of the file's starting version, comments
 // left out and whitespace kept only between two names or numbers. The starting version is
 // the student version (`course release`) of the file in the staff tree
-// (LabData::root) where that file has solution blocks, else the file under
+// (LabFiles::root) where that file has solution blocks, else the file under
 // root/student_versions/ (an autograder's folder). A student's own copy
 // (`course release`) has neither: there the release wrote each lab's
 // starting file, labs/NN_name/grading/starting.json, with a hash of each
@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "framework/checkpoints.hpp"
+#include "grading/results/results.hpp"
 
 namespace grading {
 
@@ -50,6 +51,12 @@ struct PartPlace {
 // file relative to the repository and a function name; every part a
 // checkpoint lists has an entry. Throws fw::UsageError naming the file.
 std::vector<PartPlace> read_parts(const fw::CheckpointFile& file);
+
+// `text` (C++ or GLSL) with its comments and string and character literals
+// blanked out, so that only code is searched; every newline is kept, so line
+// numbers stay the same. The forbidden check (grading/judge/judge_source.hpp)
+// searches it too.
+std::string code_only(const std::string& text);
 
 // The body of the first definition of `function` in `text` (C++ or GLSL: a
 // line that starts unindented with the name's call, then its body in
@@ -90,6 +97,11 @@ std::string starting_code_sentence(const std::string& root, const std::string& s
                                    const std::vector<PartPlace>& places,
                                    const std::vector<int>& needed,
                                    const std::string& function = "");
+
+// Says `sentence` (starting_code_sentence's, "" for none) once under the
+// first failed check of a checkpoint's `results`, before what that check
+// says, unless a check of them says it already.
+void say_starting_code(const std::string& sentence, std::vector<CheckResult>& results);
 
 // Throws fw::UsageError naming the file when a place's file in the staff
 // tree has solution blocks but its function has none of them (its starting

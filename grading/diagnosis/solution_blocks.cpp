@@ -1,6 +1,6 @@
 // The release markers' text (solution_blocks.hpp): a file's solution blocks
 // and its student version.
-#include "grading/judge/solution_blocks.hpp"
+#include "grading/diagnosis/solution_blocks.hpp"
 
 #include <filesystem>
 #include <functional>

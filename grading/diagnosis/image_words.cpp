@@ -1,4 +1,4 @@
-#include "grading/judge/image_words.hpp"
+#include "grading/diagnosis/image_words.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "grading/judge/state_diff.hpp"
+#include "grading/diagnosis/state_diff.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -7,8 +7,8 @@
 
 #include "framework/error.hpp"
 #include "framework/trace/record.hpp"
-#include "grading/judge/record_match.hpp"
-#include "grading/judge/state_words.hpp"
+#include "grading/diagnosis/record_match.hpp"
+#include "grading/diagnosis/state_words.hpp"
 
 namespace grading {
 
@@ -231,15 +231,15 @@ bool valid_record(const json& j) {
            j.contains("events") && j["events"].is_array();
 }
 
-std::string reference_record(const LabData& lab, const std::string& checkpoint) {
+std::string reference_record(const LabFiles& lab, const std::string& checkpoint) {
     return "labs/" + lab.dir + "/reference/" + checkpoint + ".record.json";
 }
 
-bool has_reference_record(const LabData& lab, const std::string& checkpoint) {
+bool has_reference_record(const LabFiles& lab, const std::string& checkpoint) {
     return std::filesystem::is_regular_file(lab.root + "/" + reference_record(lab, checkpoint));
 }
 
-void check_reference_records(const LabData& lab) {
+void check_reference_records(const LabFiles& lab) {
     for (const fw::Checkpoint& cp : lab.file.checkpoints) {
         if (!has_reference_record(lab, cp.name)) continue;
         const std::string rel = reference_record(lab, cp.name);
@@ -251,7 +251,7 @@ void check_reference_records(const LabData& lab) {
     }
 }
 
-void write_reference_record(const LabData& lab, const std::string& checkpoint,
+void write_reference_record(const LabFiles& lab, const std::string& checkpoint,
                             const std::string& text) {
     const std::string rel = reference_record(lab, checkpoint);
     const json record = json::parse(text, nullptr, /*allow_exceptions=*/false);
@@ -333,7 +333,7 @@ std::string difference_or_none(const json& student, const json& reference, const
 // For a guess that the frame is checkpoint `other`'s: whether the student's
 // draws are that checkpoint's reference draws, where the two checkpoints'
 // reference draws differ (CheckResult::FrameGuess::record_is_checkpoints).
-int record_is_checkpoints(const LabData& lab, const fw::Checkpoint& cp, const std::string& other,
+int record_is_checkpoints(const LabFiles& lab, const fw::Checkpoint& cp, const std::string& other,
                           const json& student, const json& reference) {
     if (other.empty() || !has_reference_record(lab, other)) return 0;
     const json theirs = read_record(lab.root + "/" + reference_record(lab, other));
@@ -344,7 +344,7 @@ int record_is_checkpoints(const LabData& lab, const fw::Checkpoint& cp, const st
 
 }  // namespace
 
-void add_state_diff(const LabData& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
+void add_state_diff(const LabFiles& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
                     std::vector<CheckResult>& results) {
     CheckResult* first = nullptr;
     for (CheckResult& r : results)

@@ -1,4 +1,4 @@
-#include "grading/judge/record_match.hpp"
+#include "grading/diagnosis/record_match.hpp"
 
 #include <algorithm>
 #include <map>

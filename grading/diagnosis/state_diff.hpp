@@ -8,14 +8,18 @@
 // come in another order when they are the reference's, permuted. A record
 // holds only live state and compares values, never calls, so what cannot
 // change a result is never named (docs/contract.md, "The record and the state diff").
+// The state check (grading/judge/state_check.cpp) gives its points where this
+// sentence is empty, and says it where not.
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "grading/judge/checks.hpp"
+#include "framework/checkpoints.hpp"
+#include "grading/diagnosis/lab_files.hpp"
 #include "grading/results/results.hpp"
+#include "grading/run/child.hpp"
 
 namespace grading {
 
@@ -25,20 +29,20 @@ bool valid_record(const nlohmann::json& j);
 nlohmann::json read_record(const std::string& path);
 
 // labs/NN_name/reference/CHECKPOINT.record.json, relative to the root.
-std::string reference_record(const LabData& lab, const std::string& checkpoint);
+std::string reference_record(const LabFiles& lab, const std::string& checkpoint);
 // Whether the checkpoint has a reference record: grading then asks the
 // child for the student's ("record": true).
-bool has_reference_record(const LabData& lab, const std::string& checkpoint);
+bool has_reference_record(const LabFiles& lab, const std::string& checkpoint);
 
 // Throws fw::UsageError naming the first reference record of the lab that is
 // not a record of this version (course grade checks them before grading;
 // course bless writes them again).
-void check_reference_records(const LabData& lab);
+void check_reference_records(const LabFiles& lab);
 
 // Writes the solution's record of `checkpoint` (the child's
 // NAME.record.json) as its reference; throws fw::Error when it is not a
 // record of this version or cannot be written.
-void write_reference_record(const LabData& lab, const std::string& checkpoint,
+void write_reference_record(const LabFiles& lab, const std::string& checkpoint,
                             const std::string& text);
 
 // The sentence that names the first difference between `student` and
@@ -49,20 +53,13 @@ std::string state_difference(const nlohmann::json& student, const nlohmann::json
                              const fw::Checkpoint& checkpoint, const nlohmann::json& words,
                              bool visible);
 
-// A `state` check (checks.hpp, StateCheck) of checkpoint `cp` into `r`
-// (its points and visibility set): passes where the child's record of the
-// draws and the reference record agree, else says the state diff's
-// sentence; fails, saying to bless, without the checkpoint's reference record.
-void judge_state(const LabData& lab, const fw::Checkpoint& cp, const ChildOutputs& outputs,
-                 CheckResult& r);
-
 // For a checkpoint with a failed check and a reference record: reads both
 // records and the lab's words, and adds the sentence to the diagnosis (and
 // output) of its first failed check that reads the frame, unless a failed
 // state check of the checkpoint says it. Nothing when the records agree or
 // cannot be read. Either way, the checks that hold a guess from their frame
 // (CheckResult::FrameGuess) get the records' evidence.
-void add_state_diff(const LabData& lab, const fw::Checkpoint& checkpoint,
+void add_state_diff(const LabFiles& lab, const fw::Checkpoint& checkpoint,
                     const ChildOutputs& outputs, std::vector<CheckResult>& results);
 
 }  // namespace grading

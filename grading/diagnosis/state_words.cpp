@@ -1,4 +1,4 @@
-#include "grading/judge/state_words.hpp"
+#include "grading/diagnosis/state_words.hpp"
 
 #include <algorithm>
 #include <filesystem>

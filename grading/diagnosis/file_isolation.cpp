@@ -1,4 +1,4 @@
-#include "grading/judge/file_isolation.hpp"
+#include "grading/diagnosis/file_isolation.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "framework/error.hpp"
-#include "grading/judge/frame_guesses.hpp"
+#include "grading/diagnosis/frame_guesses.hpp"
 
 namespace grading {
 
@@ -44,31 +44,22 @@ bool starts_search(CheckKind kind) {
            kind == CheckKind::Portable;
 }
 
-// The renders of `plan` whose checkpoint has a failed check that starts the search.
-std::vector<const RenderPlan*> failed_renders(const LabPlan& plan,
-                                              const std::vector<CheckResult>& checks) {
+// The job of the lab's own child, cut to the renders whose checkpoint has a
+// failed check that starts the search, with no unit calls.
+json job_for(const json& lab_job, const std::vector<CheckResult>& checks) {
     std::set<std::string> failed;
     for (const CheckResult& c : checks)
         if (!c.passed && starts_search(c.kind)) failed.insert(c.checkpoint);
-    std::vector<const RenderPlan*> renders;
-    for (const RenderPlan& r : plan.renders)
-        if (failed.count(r.checkpoint)) renders.push_back(&r);
-    return renders;
-}
-
-// The job of the lab's own child, cut to `renders`, with no unit calls.
-json job_for(const LabPlan& plan, const std::vector<const RenderPlan*>& renders) {
     json job = {
-        {"lab", plan.job.value("lab", "")}, {"renders", json::array()}, {"units", json::array()}};
-    for (const json& r : plan.job.value("renders", json::array()))
-        for (const RenderPlan* wanted : renders)
-            if (r.value("name", "") == wanted->checkpoint) job["renders"].push_back(r);
+        {"lab", lab_job.value("lab", "")}, {"renders", json::array()}, {"units", json::array()}};
+    for (const json& r : lab_job.value("renders", json::array()))
+        if (failed.count(r.value("name", ""))) job["renders"].push_back(r);
     return job;
 }
 
 }  // namespace
 
-std::map<std::string, std::string> student_shaders(const LabData& lab) {
+std::map<std::string, std::string> student_shaders(const LabFiles& lab) {
     std::map<std::string, std::string> files;
     // An autograder's LAB_ROOT holds the student's shaders: the course's are aside.
     const fs::path aside = fs::path(lab.root) / kSolutionShaders;
@@ -92,18 +83,16 @@ std::string file_isolation_sentence(const std::string& file) {
            "` in place of yours: the mistake is in shaders/" + file + ".";
 }
 
-void isolate_shader_mistakes(const LabData& lab, const LabPlan& plan,
+void isolate_shader_mistakes(const LabFiles& lab, const json& job, const FrameVerdict& frame_passes,
                              std::vector<CheckResult>& checks, const ChildSpawn& spawn) {
-    const std::vector<const RenderPlan*> renders = failed_renders(plan, checks);
-    if (renders.empty()) return;
-    const std::map<std::string, std::string> files = student_shaders(lab);
-    if (files.empty()) return;
-
     // Job 0 renders the student's files as they are: a checkpoint that
     // passes there (its frame depended on a checkpoint rendered before it
     // in the lab's own child) says nothing of its files. Job i replaces the
     // i-th file.
-    std::vector<json> jobs = {job_for(plan, renders)};
+    std::vector<json> jobs = {job_for(job, checks)};
+    if (jobs.front()["renders"].empty()) return;
+    const std::map<std::string, std::string> files = student_shaders(lab);
+    if (files.empty()) return;
     std::vector<std::string> names;
     for (const auto& [file, text] : files) {
         names.push_back(file);
@@ -114,28 +103,28 @@ void isolate_shader_mistakes(const LabData& lab, const LabPlan& plan,
     run_lab_children(spawn.lab_binary, jobs, spawn.backend, spawn.limits, spawn.user, spawn.cache,
                      [&](size_t i, LabChild&& child) { children[i] = std::move(child); });
     // A job whose child did not end normally restores nothing.
-    auto passes = [&](size_t job, const RenderPlan& render) {
-        const LabChild& child = children[job];
-        return child.run.ok() && child.outputs &&
-               frame_checks_pass(lab, plan, render, *child.outputs);
+    auto passes = [&](size_t i, const std::string& checkpoint) {
+        const LabChild& child = children[i];
+        return child.run.ok() && child.outputs && frame_passes(checkpoint, *child.outputs);
     };
     if (!children.front().run.ok()) return;
 
     FrameIsolations found;
-    for (const RenderPlan* render : renders) {
-        if (passes(0, *render)) continue;
+    for (const json& render : jobs.front()["renders"]) {
+        const std::string checkpoint = render.value("name", "");
+        if (passes(0, checkpoint)) continue;
         std::vector<std::string> restoring;
         for (size_t i = 1; i < jobs.size(); ++i)
-            if (passes(i, *render)) restoring.push_back(names[i - 1]);
+            if (passes(i, checkpoint)) restoring.push_back(names[i - 1]);
         // Only a child that ended normally replaced its file.
-        FrameIsolation& here = found[render->checkpoint];
+        FrameIsolation& here = found[checkpoint];
         for (size_t i = 1; i < jobs.size(); ++i)
             if (children[i].run.ok()) here.replaced.insert(names[i - 1]);
         if (restoring.size() == 1) here.puts_right = restoring.front();
         if (restoring.size() != 1) continue;
         // Once, under the checkpoint's first failed check that started the search.
         const auto first = std::find_if(checks.begin(), checks.end(), [&](const CheckResult& c) {
-            return c.checkpoint == render->checkpoint && !c.passed && starts_search(c.kind);
+            return c.checkpoint == checkpoint && !c.passed && starts_search(c.kind);
         });
         const std::string sentence = file_isolation_sentence(restoring.front());
         first->diagnosis += (first->diagnosis.empty() ? "" : "\n") + sentence;

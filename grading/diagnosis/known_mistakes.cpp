@@ -1,4 +1,4 @@
-#include "grading/judge/known_mistakes.hpp"
+#include "grading/diagnosis/known_mistakes.hpp"
 
 #include <filesystem>
 #include <fstream>

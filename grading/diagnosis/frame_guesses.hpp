@@ -1,10 +1,10 @@
-// Guesses from a matching frame, weighed against the evidence. A failed
-// image check's frame may be the frame of a mistake the course knows
-// (known_mistakes.hpp) or another checkpoint's expected frame
-// (image_matches.hpp); either is only a guess, since other code can draw the
-// same pixels. What this submission's grading measured at that checkpoint
-// is evidence: its unit checks, the state diff of its records
-// (state_diff.hpp) and which file's replacement puts the frame right
+// Guesses from a matching frame, weighed against the evidence. A failed image
+// check's frame may be the frame of a mistake the course knows
+// (known_mistakes.hpp) or another checkpoint's expected frame (the judge
+// matches it: grading/judge/image_matches.hpp); either is only a guess, since
+// other code can draw the same pixels. What this submission's grading measured
+// at that checkpoint is evidence: its unit checks, the state diff of its
+// records (state_diff.hpp) and which file's replacement puts the frame right
 // (file_isolation.hpp). A guess is said only where that evidence agrees:
 //
 // - a known mistake, where each of its signature's parts that can be
@@ -31,7 +31,9 @@
 #include <string>
 #include <vector>
 
-#include "grading/judge/checks.hpp"
+#include "framework/checkpoints.hpp"
+#include "grading/diagnosis/known_mistakes.hpp"
+#include "grading/diagnosis/lab_files.hpp"
 #include "grading/results/results.hpp"
 
 namespace grading {
@@ -50,8 +52,15 @@ using FrameIsolations = std::map<std::string, FrameIsolation>;  // by checkpoint
 // that holds a guess, what the evidence supports, in place of the lines it
 // said before (a second call, with `isolations`, weighs what file isolation
 // found too). `isolations` may be null.
-void say_frame_guesses(const LabData& lab, std::vector<CheckResult>& results,
+void say_frame_guesses(const LabFiles& lab, std::vector<CheckResult>& results,
                        const FrameIsolations* isolations);
+
+// "Your frame is the one checkpoint OTHER expects (P there, here Q): your
+// code most likely treats P Q as there." for a frame of `checkpoint` that is
+// the expected frame of checkpoint `other`, with the parameters in which
+// the two differ; "" when the lab has no checkpoint `other`.
+std::string checkpoint_match_sentence(const LabFiles& lab, const fw::Checkpoint& checkpoint,
+                                      const std::string& other);
 
 // Why `mistake` is ruled out by the evidence of `guess` (its state diff),
 // the unit checks of the lab that pass and fail (`unit_passes`, by
