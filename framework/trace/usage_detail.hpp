@@ -64,7 +64,7 @@ bool is_image(GLenum type);
 // isampler2D, sampler2DShadow...), 0 for one this does not know.
 GLenum sampler_target(GLenum type);
 // "GL_TEXTURE_2D", ...
-const char* target_name(GLenum target);
+std::string target_name(GLenum target);
 
 // The texture bound on `unit` for `target`, and why it is incomplete under
 // GL 4.3 section 8.17 ("" when complete); the filters of a sampler object

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "framework/gl/debug.hpp"
 #include "framework/trace/calls.hpp"
 #include "framework/trace/usage_detail.hpp"
 
@@ -61,28 +62,21 @@ constexpr SamplerType kSamplers[] = {
 
 struct Target {
     GLenum target, binding;
-    const char* name;
     int shrinking;  // dimensions that halve from level to level (the rest are layers)
     GLenum max_size;
 };
 constexpr Target kTargets[] = {
-    {GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D, "GL_TEXTURE_1D", 1, GL_MAX_TEXTURE_SIZE},
-    {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D, "GL_TEXTURE_2D", 2, GL_MAX_TEXTURE_SIZE},
-    {GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D, "GL_TEXTURE_3D", 3, GL_MAX_3D_TEXTURE_SIZE},
-    {GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP, "GL_TEXTURE_CUBE_MAP", 2,
-     GL_MAX_CUBE_MAP_TEXTURE_SIZE},
-    {GL_TEXTURE_1D_ARRAY, GL_TEXTURE_BINDING_1D_ARRAY, "GL_TEXTURE_1D_ARRAY", 1,
-     GL_MAX_TEXTURE_SIZE},
-    {GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BINDING_2D_ARRAY, "GL_TEXTURE_2D_ARRAY", 2,
-     GL_MAX_TEXTURE_SIZE},
-    {GL_TEXTURE_RECTANGLE, GL_TEXTURE_BINDING_RECTANGLE, "GL_TEXTURE_RECTANGLE", 2, 0},
-    {GL_TEXTURE_CUBE_MAP_ARRAY, GL_TEXTURE_BINDING_CUBE_MAP_ARRAY, "GL_TEXTURE_CUBE_MAP_ARRAY", 2,
-     GL_MAX_CUBE_MAP_TEXTURE_SIZE},
-    {GL_TEXTURE_BUFFER, GL_TEXTURE_BINDING_BUFFER, "GL_TEXTURE_BUFFER", 0, 0},
-    {GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BINDING_2D_MULTISAMPLE, "GL_TEXTURE_2D_MULTISAMPLE", 0,
-     0},
-    {GL_TEXTURE_2D_MULTISAMPLE_ARRAY, GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY,
-     "GL_TEXTURE_2D_MULTISAMPLE_ARRAY", 0, 0},
+    {GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D, 1, GL_MAX_TEXTURE_SIZE},
+    {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D, 2, GL_MAX_TEXTURE_SIZE},
+    {GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D, 3, GL_MAX_3D_TEXTURE_SIZE},
+    {GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP, 2, GL_MAX_CUBE_MAP_TEXTURE_SIZE},
+    {GL_TEXTURE_1D_ARRAY, GL_TEXTURE_BINDING_1D_ARRAY, 1, GL_MAX_TEXTURE_SIZE},
+    {GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BINDING_2D_ARRAY, 2, GL_MAX_TEXTURE_SIZE},
+    {GL_TEXTURE_RECTANGLE, GL_TEXTURE_BINDING_RECTANGLE, 2, 0},
+    {GL_TEXTURE_CUBE_MAP_ARRAY, GL_TEXTURE_BINDING_CUBE_MAP_ARRAY, 2, GL_MAX_CUBE_MAP_TEXTURE_SIZE},
+    {GL_TEXTURE_BUFFER, GL_TEXTURE_BINDING_BUFFER, 0, 0},
+    {GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BINDING_2D_MULTISAMPLE, 0, 0},
+    {GL_TEXTURE_2D_MULTISAMPLE_ARRAY, GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY, 0, 0},
 };
 
 const Target* target_of(GLenum target) {
@@ -100,21 +94,9 @@ bool is_integer_format(GLint f) {
     return std::find(std::begin(kInteger), std::end(kInteger), f) != std::end(kInteger);
 }
 
-const char* filter_name(GLint f) {
-    switch (f) {
-        case GL_NEAREST:
-            return "GL_NEAREST";
-        case GL_LINEAR:
-            return "GL_LINEAR";
-        case GL_NEAREST_MIPMAP_NEAREST:
-            return "GL_NEAREST_MIPMAP_NEAREST";
-        case GL_LINEAR_MIPMAP_NEAREST:
-            return "GL_LINEAR_MIPMAP_NEAREST";
-        case GL_NEAREST_MIPMAP_LINEAR:
-            return "GL_NEAREST_MIPMAP_LINEAR";
-        default:
-            return "GL_LINEAR_MIPMAP_LINEAR";
-    }
+// A min or mag filter's name (GL_LINEAR is one of both).
+std::string filter_name(GLint f) {
+    return fw::gl_enum_name(GLenum(f), GLAD_GL_GROUP_TextureMinFilter);
 }
 
 struct Level {
@@ -266,9 +248,9 @@ GLenum sampler_target(GLenum type) {
     return 0;
 }
 
-const char* target_name(GLenum target) {
-    const Target* t = target_of(target);
-    return t ? t->name : "a texture target";
+std::string target_name(GLenum target) {
+    return target_of(target) ? fw::gl_enum_name(target, GLAD_GL_GROUP_TextureTarget)
+                             : "a texture target";
 }
 
 UnitTexture texture_on_unit(GLuint unit, GLenum target) {
@@ -283,7 +265,7 @@ UnitTexture texture_on_unit(GLuint unit, GLenum target) {
     glGetIntegerv(GL_SAMPLER_BINDING, &sampler);
     out.texture = static_cast<GLuint>(texture);
     if (texture == 0)
-        out.incomplete = std::string("no texture is bound to ") + t->name + " on it";
+        out.incomplete = std::string("no texture is bound to ") + target_name(target) + " on it";
     else if (t->shrinking > 0)
         out.incomplete = why_incomplete(*t, static_cast<GLuint>(sampler));
     glActiveTexture(static_cast<GLenum>(active));
