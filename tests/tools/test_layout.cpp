@@ -20,7 +20,7 @@
 //   README excepted) for any part of a name: some path must match, from the top or, as in the
 //   listings of a lab's folder, from a lab folder (`tests/*.cpp`). A path without a placeholder
 //   or an extension may name the program built from a source of that name (bench/bench_png).
-//   labs/90_warmup/, the lab of README's "Adding a lab", exists only in its test's copy.
+//   labs/90_warmup/ (docs/staff.md, Adding a lab) exists only in its test's copy.
 // - A section citation is a page (docs/contract.md, docs/labs.md, docs/conventions.md,
 //   labs/NN_name/README.md; README.md is the sheet of the lab the citing file is in, else the
 //   top README) followed directly by ", " and comma-separated names, up to `)`, `;`, `:`, `|`,
@@ -57,7 +57,7 @@ const std::vector<std::string> kRooms = {"sandbox",   "results",  "run",    "uni
 // The one header of grading/diagnosis/ that grading/judge/ includes: the judge
 // reads the diagnosis through it alone (docs/architecture.md).
 const std::string kDiagnosisInterface = "grading/diagnosis/diagnosis.hpp";
-// The lab that README's "Adding a lab" makes, in a copy of the tree only
+// The lab that docs/staff.md, Adding a lab, makes, in a copy of the tree only
 // (tests/tools/test_new_lab.cpp).
 const std::string kNewLab = "90_warmup";
 

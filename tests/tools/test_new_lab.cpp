@@ -1,4 +1,4 @@
-// "Adding a lab" (README.md) taken at its word: in a copy of this repository,
+// docs/staff.md, Adding a lab, taken at its word: in a copy of this repository,
 // lab 0 is copied under a new number and name (labs/90_warmup/ and
 // shaders/90_warmup/, its C++ namespace renamed so that both labs link into
 // one `lab`), and nothing else is touched. The new lab must then list,
