@@ -103,7 +103,7 @@ std::string object_label(GLenum identifier, GLuint id) {
     return label;
 }
 
-std::string gl_enum_name(GLenum value, GladGlGroup group) {
+const char* gl_enum_name_or_null(GLenum value, GladGlGroup group) {
     const GladGlName* begin = glad_gl_names;
     const GladGlName* end = glad_gl_names + glad_gl_name_count;
     const auto before = [](const GladGlName& row, std::pair<unsigned, GLenum> key) {
@@ -111,7 +111,11 @@ std::string gl_enum_name(GLenum value, GladGlGroup group) {
     };
     const GladGlName* it =
         std::lower_bound(begin, end, std::make_pair(unsigned(group), value), before);
-    if (it != end && it->group == group && it->value == value) return it->name;
+    return it != end && it->group == group && it->value == value ? it->name : nullptr;
+}
+
+std::string gl_enum_name(GLenum value, GladGlGroup group) {
+    if (const char* name = gl_enum_name_or_null(value, group)) return name;
     char buf[16];
     std::snprintf(buf, sizeof buf, "0x%04X", value);
     return buf;

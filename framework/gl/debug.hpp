@@ -45,5 +45,7 @@ std::string object_label(GLenum identifier, GLuint id);
 // of the loader's API, generated with it (scripts/gen-gl-names.py); "0x1234"
 // for a value it does not name.
 std::string gl_enum_name(GLenum value, GladGlGroup group = GLAD_GL_GROUP_any);
+// The same name, or null where the table names no such value in `group`.
+const char* gl_enum_name_or_null(GLenum value, GladGlGroup group);
 
 }  // namespace fw

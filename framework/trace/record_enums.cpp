@@ -26,8 +26,8 @@ std::string enum_name(EnumKind kind, GLenum value) {
             if (value == GL_NONE) return "GL_NONE";
             break;
     }
-    const std::string name = fw::gl_enum_name(value, group);
-    return name.rfind("0x", 0) == 0 ? fw::gl_enum_name(value) : name;
+    const char* name = fw::gl_enum_name_or_null(value, group);
+    return name ? name : fw::gl_enum_name(value);
 }
 
 std::string bits_name(GladGlGroup group, GLbitfield value,
@@ -36,9 +36,9 @@ std::string bits_name(GladGlGroup group, GLbitfield value,
     std::string out;
     const auto add = [&](GLbitfield bit) {
         if (!(value & bit)) return;
-        const std::string name = fw::gl_enum_name(bit, group);
-        if (name.rfind("0x", 0) == 0) return;
-        out += (out.empty() ? "" : "|") + name;
+        const char* name = fw::gl_enum_name_or_null(bit, group);
+        if (!name) return;
+        out += (out.empty() ? "" : "|") + std::string(name);
         value &= ~bit;
     };
     if (order.size() == 0)
