@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # Wall time of `course grade` (median of RUNS runs), with the goals beside it:
-#   all labs, warm shader cache, --jobs 2       <= 0.6 s
+#   all labs, warm shader cache, --jobs 2       <= 1.0 s (13 labs; then 0.6 s)
 #   all labs, warm, --jobs 1                    <= 2.2 s
 #   all labs, warm, --jobs = cores (16 cores)   <= 0.3 s
 #   each lab alone, warm, --jobs 1              <= 0.35 s
-#   each lab after lab 6, alone / the slowest of labs 0-6   <= 1.0
+#   each lab after lab 10, alone / the slowest of labs 0-10   <= 1.0
 #   jobs 1 / jobs 2 (warm)                      >= 1.8
 #   grading (warm, --jobs 1) / the floor        <= 1.5
 #   grading (warm, --jobs 1) / the floor once   <= 2.0
 #   with / without namespaces and cgroups       <= 1.05 (root only)
-# and, without a goal, the CPU seconds of course and of the labs' children.
+# and, without a goal, the CPU seconds of course and of the labs' children,
+# and each lab's time split into its unit checks, per-draw record, renders,
+# judging and report images (course grade --verbose's time table).
 #   the wrapper's per-draw cost / raw GL        <= 1.02   (bench_draw)
 # The floor (bench_floor) is the same frames rendered and read back in one
 # process with nothing written: each lab's better of two rounds ("floor"), and
@@ -97,7 +99,11 @@ floor=$(awk '{print $2}' <<<"$pairs" | median)
 floor_once=$(awk '{print $3}' <<<"$pairs" | median)
 floor_ratio=$(awk '{print $4}' <<<"$pairs" | median)
 floor_once_ratio=$(awk '{print $5}' <<<"$pairs" | median)
-draw=$("$bin/bench_draw" | awk '$1 == "draw" && $2 == "only" {print $7}')
+# bench_draw's "draw only" rows: the wrapper against raw GL, then glad's
+# hooks (no observer) against the driver's functions called directly.
+draws=$("$bin/bench_draw" | awk '$1 == "draw" && $2 == "only" {print $7}')
+draw=$(sed -n 1p <<<"$draws")
+hooks=$(sed -n 2p <<<"$draws")
 
 printf '%-44s %8s %8s %8s\n' "all labs (seconds)" "cold" "seeded" "warm"
 printf '%-44s %8s %8s %8s\n' "  --jobs 1" "$cold1" "$seed1" "$warm1"
@@ -105,15 +111,38 @@ printf '%-44s %8s %8s %8s\n' "  --jobs 2" "$cold2" "$seed2" "$warm2"
 cores=$(nproc)
 [ "$cores" -gt 2 ] && warmn=$(median_seconds --jobs "$cores" "$@") &&
   printf '%-44s %8s %8s %8s\n' "  --jobs $cores" "" "" "$warmn"
-echo "per lab, --jobs 1 (seconds):"
+# Where each lab's time goes, from `course grade --verbose`'s time table
+# (grading/report/time_table.cpp), the median of $runs warm runs per cell:
+# the unit checks (course's plan, the child's calls, course's judging), the
+# per-draw record, the rest of the renders, the other checks' judging, and
+# the report's images.
+table=$(for ((i = 0; i < runs; i++)); do
+  "$bin/course" grade --verbose --jobs 1 --out "$out/r" "$@" 2>/dev/null |
+    awk '/^lab +child +plan/ {on = 1; next} on && /^all labs/ {on = 0} on && NF == 11'
+done | awk '{
+    n[$1]++; k = n[$1]
+    v[$1, k, "units"] = $3 + $4 + $9; v[$1, k, "record"] = $7
+    v[$1, k, "render"] = $6 - $7 - $8; v[$1, k, "judge"] = $10; v[$1, k, "images"] = $11
+  }
+  function median(lab, f,   a, i, j, t, m) {
+    m = n[lab]
+    for (i = 1; i <= m; i++) a[i] = v[lab, i, f]
+    for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
+    return a[int((m + 1) / 2)]
+  }
+  END { for (lab in n) printf "%s %.3f %.3f %.3f %.3f %.3f\n", lab, median(lab, "units"),
+    median(lab, "record"), median(lab, "render"), median(lab, "judge"), median(lab, "images") }')
+echo "per lab, --jobs 1 (seconds): wall cold and warm; then, warm, where the time went:"
+printf '  %-22s %6s %6s  %6s %6s %6s %6s %6s\n' "" cold warm units record render judge images
 worst=0 worst_first=0 worst_later=0 n=0
 for lab in $labs; do
   c=$(cold median_seconds "$lab" --jobs 1 "$@")
   w=$(median_seconds "$lab" --jobs 1 "$@")
-  printf '  %-42s %8s %8s\n' "$lab" "$c" "$w"
+  parts=$(awk -v l="$lab" '$1 == l {printf "%6s %6s %6s %6s %6s", $2, $3, $4, $5, $6}' <<<"$table")
+  printf '  %-22s %6s %6s  %s\n' "$lab" "$c" "$w" "$parts"
   worst=$(max "$worst" "$w")
-  # Labs 0-6 (the first seven `lab list` prints) set the bar for the later ones.
-  if [ $((n++)) -lt 7 ]; then worst_first=$(max "$worst_first" "$w"); else worst_later=$(max "$worst_later" "$w"); fi
+  # Labs 0-10 (the first eleven `lab list` prints) set the bar for the later ones.
+  if [ $((n++)) -lt 11 ]; then worst_first=$(max "$worst_first" "$w"); else worst_later=$(max "$worst_later" "$w"); fi
 done
 # Where a grading's CPU goes: course judging, against the labs' children
 # rendering (its CPU: line); on less than a core their sum is the wall time.
@@ -121,7 +150,8 @@ cpu=$("$bin/course" grade --verbose --jobs 1 --out "$out/r" "$@" 2>/dev/null | s
 echo "CPU seconds of all labs, warm, --jobs 1: ${cpu:-not reported}"
 echo
 echo "figures against the goals (warm shader cache):"
-row "all labs, --jobs 2 (s)" "$warm2" "<=" 0.6
+row "all labs, --jobs 2 (s)" "$warm2" "<=" 1.0
+echo "  (the goal after 1.0 s: 0.6 s)"
 row "all labs, --jobs 1 (s)" "$warm1" "<=" 2.2
 if [ "$cores" -ge 16 ]; then
   row "all labs, --jobs $cores (s)" "$warmn" "<=" 0.3
@@ -129,11 +159,12 @@ else
   echo "all labs on 16 cores: not measured ($cores cores here; goal <= 0.3 s)"
 fi
 row "slowest lab alone, --jobs 1 (s)" "$worst" "<=" 0.35
-[ "$n" -gt 7 ] && row "slowest after lab 6 / slowest of 0-6" "$(ratio "$worst_later" "$worst_first")" "<=" 1.0
+[ "$n" -gt 11 ] && row "slowest after lab 10 / slowest of 0-10" "$(ratio "$worst_later" "$worst_first")" "<=" 1.0
 row "jobs 1 / jobs 2" "$(ratio "$warm1" "$warm2")" ">=" 1.8
 row "grading (--jobs 1) / floor ($floor s)" "$floor_ratio" "<=" 1.5
 row "grading (--jobs 1) / floor once ($floor_once s)" "$floor_once_ratio" "<=" 2.0
 row "wrapper per-draw / raw GL (bench_draw)" "${draw:-?}" "<=" 1.02
+row "glad's hooks / direct calls (bench_draw)" "${hooks:-?}" "<=" 1.02
 if [ -n "$plain1" ]; then
   echo
   echo "sandbox layers on ($layers) vs. without namespaces and cgroups, all labs, --jobs 1:"

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -44,6 +45,19 @@ void write_all(const char* data, size_t size, const std::string& path) {
         data += n;
         size -= static_cast<size_t>(n);
     }
+}
+
+// Where a job's wall time went, for child.json's "seconds" (course grade
+// --verbose prints it per lab): the unit calls, the context and the lab's
+// init, the renders, and within them the per-draw record and the usage checks.
+struct Seconds {
+    double units = 0.0, start = 0.0, render = 0.0, record = 0.0, usage = 0.0;
+};
+Seconds seconds;
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 void put_output(const std::string& path, const std::string& bytes) {
@@ -101,7 +115,12 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
         if (record) recorder->end();
         throw;
     }
-    if (record) put_output(base + ".record.json", gl_record::record_text(recorder->end()));
+    if (record) {
+        const Clock::time_point start = Clock::now();
+        const std::string text = gl_record::record_text(recorder->end());
+        seconds.record += since(start);
+        put_output(base + ".record.json", text);
+    }
     renderer.read_back(params, width, height, 0.0, read, out);
     // Raw pixels: course judges them and encodes only what a report shows.
     put_output(base + ".pam", encode_pam(out.color));
@@ -218,11 +237,11 @@ struct Observers {
     explicit Observers(const json& renders) {
         if (any_render_asks(renders, "record")) {
             recorder = std::make_unique<gl_record::Recorder>();
-            fanout.add(recorder.get());
+            fanout.add(recorder.get(), &seconds.record);
         }
         if (any_render_asks(renders, "usage")) {
             usage = std::make_unique<gl_usage::Checker>();
-            fanout.add(usage.get());
+            fanout.add(usage.get(), &seconds.usage);
         }
         if (!fanout.empty()) gl_calls::observe(&fanout);
     }
@@ -239,19 +258,26 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     // for every checkpoint: keep them in the heap, not in fresh zeroed pages.
     mallopt(M_MMAP_THRESHOLD, 64 << 20);
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
+    seconds = Seconds();
+    Clock::time_point start = Clock::now();
     json job = read_job(job_path);
     const RegisteredLab& lab = find_lab(job.value("lab", ""));
     const ShaderOverrides overrides(job, job_path);
 
     // Unit calls first: they need no context, so a broken shader costs them nothing.
     write_json(out_dir + "/units.json", call_units(lab, job.value("units", json::array())));
+    seconds.units = since(start);
 
     const json renders = job.value("renders", json::array());
     const Observers observers(renders);
 
+    start = Clock::now();
     auto [context, renderer, context_json, init_error] = start_rendering(lab, backend);
+    seconds.start = since(start);
+    start = Clock::now();
     render_all(renderer.get(), init_error, lab, renders, out_dir, observers.recorder.get(),
                observers.usage.get());
+    seconds.render = since(start);
     // Programs that failed to build: the renders that drew with them failed
     // with the compiler's message; course names the files in the lab's status.
     json shader_errors = json::array();
@@ -266,7 +292,13 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     write_file(done + ".part", {{"complete", true},
                                 {"context", context_json},
                                 {"init_error", init_error},
-                                {"shader_errors", shader_errors}});
+                                {"shader_errors", shader_errors},
+                                {"seconds",
+                                 {{"units", seconds.units},
+                                  {"start", seconds.start},
+                                  {"render", seconds.render},
+                                  {"record", seconds.record},
+                                  {"usage", seconds.usage}}}});
     if (std::rename((done + ".part").c_str(), done.c_str()) != 0)
         throw Error("cannot rename '" + done + ".part' to '" + done + "'");
 }

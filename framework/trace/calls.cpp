@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <atomic>
+#include <chrono>
 
 namespace fw::gl_calls {
 
@@ -34,11 +35,14 @@ void after_call(void*, const char* name, GLADapiproc, int count, ...) {
 }  // namespace
 
 void Fanout::each(Hook hook, const char* name, int count, va_list args) {
-    for (Observer* o : observers_) {
+    using Clock = std::chrono::steady_clock;
+    for (const Added& o : observers_) {
+        const Clock::time_point start = o.seconds ? Clock::now() : Clock::time_point();
         va_list copy;
         va_copy(copy, args);
-        (o->*hook)(name, count, copy);
+        (o.observer->*hook)(name, count, copy);
         va_end(copy);
+        if (o.seconds) *o.seconds += std::chrono::duration<double>(Clock::now() - start).count();
     }
 }
 

@@ -30,10 +30,14 @@ public:
 };
 
 // Passes each call on to several observers, in the order they were added
-// (each reads the arguments from its own copy of the list).
+// (each reads the arguments from its own copy of the list). Where `seconds`
+// is given, the wall time the observer spends on the calls is added to it
+// (`course grade --verbose` prints what the per-draw record costs).
 class Fanout : public Observer {
 public:
-    void add(Observer* observer) { observers_.push_back(observer); }
+    void add(Observer* observer, double* seconds = nullptr) {
+        observers_.push_back({observer, seconds});
+    }
     bool empty() const { return observers_.empty(); }
     void before(const char* name, int count, va_list args) override;
     void after(const char* name, int count, va_list args) override;
@@ -41,7 +45,11 @@ public:
 private:
     void each(void (Observer::*hook)(const char*, int, va_list), const char* name, int count,
               va_list args);
-    std::vector<Observer*> observers_;
+    struct Added {
+        Observer* observer;
+        double* seconds;
+    };
+    std::vector<Added> observers_;
 };
 
 // Replaces glad's default hooks; call right after gladLoadGL (the framework's

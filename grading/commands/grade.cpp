@@ -185,7 +185,8 @@ LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& c
     result.status = child.run.status;
     result.log = child.run.log;
     result.seconds = child.run.seconds;
-    result.checks = judge_lab(lab, plan, *child.outputs, out, threads);
+    result.checks = judge_lab(lab, plan, *child.outputs, out, threads, &result.time);
+    child_seconds(*child.outputs, result.time);
     result.hidden_left_out = lab.file.hidden_checkpoints;
     result.hidden_points_left_out = lab.file.hidden_points;
     const StateLeftOut state = state_checks_left_out(lab);
@@ -209,9 +210,13 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
                                   const std::function<int()>& threads) {
     std::vector<LabPlan> plans;
     std::vector<nlohmann::json> jobs;
+    std::vector<double> plan_seconds;
     for (const LabData* lab : labs) {
+        const auto start = std::chrono::steady_clock::now();
         plans.push_back(plan_lab(*lab, setup.seed, PlanFor::Grading));
         jobs.push_back(plans.back().job);
+        plan_seconds.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     std::vector<LabResult> results(labs.size());
     std::vector<char> ran(labs.size(), 0);  // the lab's child ran to its end
@@ -219,6 +224,7 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
     Pipeline<Ended> judging([&](Ended& e) {
         results[e.first] =
             judge_child(*labs[e.first], plans[e.first], e.second, setup.out, threads());
+        results[e.first].time.plan = plan_seconds[e.first];
         ran[e.first] = e.second.run.ok();
     });
     const LabReady ended = [&judging](size_t i, LabChild&& child) {
@@ -369,11 +375,15 @@ int grade_command(const GradeOptions& options) {
     grade_in_children(labs, judge_not_built(labs, options, run), setup, options, run);
 
     timing.stop(run);
+    const auto reports_start = std::chrono::steady_clock::now();
     write_reports(run, options.out, {options.format, options.results, options.hidden_as});
+    const double reports_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - reports_start).count();
     // The report's path last, where a student's eye ends.
     const size_t shown = options.verbose ? static_cast<size_t>(-1) : kTerminalFailedChecks;
-    std::printf("%s\nReport: %s\n", summary_table(run, options.verbose, shown).c_str(),
-                (fs::path(options.out) / "index.html").string().c_str());
+    std::printf("%s", summary_table(run, options.verbose, shown).c_str());
+    if (options.verbose) std::printf("%s", time_table(run, reports_seconds).c_str());
+    std::printf("\nReport: %s\n", (fs::path(options.out) / "index.html").string().c_str());
     print_cache_missed(run, setup.cache.dir);
     return run.passed() ? 0 : 1;
 }

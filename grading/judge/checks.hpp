@@ -196,6 +196,10 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
 // programs that failed to build (child.json's "shader_errors"); else empty.
 std::string shader_error_status(const ChildOutputs& outputs);
 
+// Where the child's time went, from its child.json's "seconds" (left as it
+// is where the file or a field is missing): the child_* fields of `time`.
+void child_seconds(const ChildOutputs& outputs, LabTime& time);
+
 // Whether every check of `checkpoint` that judges its frame (image, probe,
 // stat, buffer, portable) passes on the frame in `outputs`, judged as
 // judge_lab judges it, writing no report file; false for a checkpoint the
@@ -228,9 +232,10 @@ StateLeftOut state_checks_left_out(const LabData& lab);
 // Every check of every checkpoint, from the child's raw outputs. Images for
 // the report go to out_dir/<lab>/<checkpoint>[.expected|.diff].png. The
 // checkpoints are judged on up to `threads` threads; the results come in the
-// checkpoints' order whatever the number.
+// checkpoints' order whatever the number. Where `time` is given, the
+// judging's time goes into its judge_units, judge_frames and report.
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    const ChildOutputs& outputs, const std::string& out_dir,
-                                   int threads = 1);
+                                   int threads = 1, LabTime* time = nullptr);
 
 }  // namespace grading

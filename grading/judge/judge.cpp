@@ -3,6 +3,7 @@
 // child claims (its stats' "params", extra fields) is ignored; child.json
 // gives only the status line of a lab whose programs failed to build.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -31,6 +32,11 @@ namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 // A failed frame that matches one the course knows is a guess, said once
 // the evidence is in (say_frame_guesses); a part at its starting code is
@@ -235,46 +241,78 @@ bool frame_checks_pass(const LabData& lab, const LabPlan& plan, const std::strin
     return true;
 }
 
+namespace {
+
+// One checkpoint judged: its checks' results, the name of its frame's image
+// for the report (where it rendered), and the time each part took.
+struct CheckpointJudged {
+    std::vector<CheckResult> checks;
+    std::string rendered;
+    LabTime time;
+};
+
+void judge_checkpoint(LabInputs& in, size_t k, const RenderPlan* render, bool records,
+                      CheckpointJudged& out) {
+    const LabData& lab = in.lab;
+    const fw::Checkpoint& checkpoint = lab.file.checkpoints[k];
+    const Clock::time_point start = Clock::now();
+    std::optional<Frame> frame;
+    if (render) frame.emplace(in.outputs, *render, lab.id, in.out_dir);
+    const std::string starting =
+        starting_code_sentence(lab.root, lab.sources, lab.parts, checkpoint.parts);
+    for (size_t i = 0; i < lab.checks.at(k).size(); ++i) {
+        // A copy without the course's records (a student's) leaves its
+        // state checks to the autograder (state_checks_left_out).
+        if (!records && lab.checks[k][i].kind == CheckKind::State) continue;
+        const Clock::time_point check_start = Clock::now();
+        CheckResult result;
+        judge_check(in, k, i, render, frame ? &*frame : nullptr, starting, result);
+        if (lab.checks[k][i].kind == CheckKind::Unit) out.time.judge_units += since(check_start);
+        out.checks.push_back(std::move(result));
+    }
+    say_starting_code(starting, out.checks);
+    if (frame) {
+        add_state_diff(lab, checkpoint, in.outputs, out.checks);
+        const Clock::time_point publish_start = Clock::now();
+        frame->publish();
+        out.rendered = frame->rendered();
+        out.time.report += since(publish_start);
+    }
+    // The rest: the frame read, the other checks, the state's difference.
+    out.time.judge_frames = since(start) - out.time.judge_units - out.time.report;
+}
+
+}  // namespace
+
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    const ChildOutputs& outputs, const std::string& out_dir,
-                                   int threads) {
+                                   int threads, LabTime* time) {
     std::map<std::string, const RenderPlan*> renders;
     for (const RenderPlan& r : plan.renders) renders[r.checkpoint] = &r;
     LabInputs in{lab, plan, outputs, out_dir, json(), "", ReferenceImages(lab)};
+    const Clock::time_point start = Clock::now();
     in.units = read_units(plan, outputs, in.units_why);
+    const double read_seconds = since(start);
     // Each checkpoint's frame is decoded, compared and encoded for the
     // report on its own: the checkpoints go to `threads` threads.
     const std::vector<fw::Checkpoint>& checkpoints = lab.file.checkpoints;
-    std::vector<std::vector<CheckResult>> by_checkpoint(checkpoints.size());
-    std::vector<std::string> rendered(checkpoints.size());
+    std::vector<CheckpointJudged> judged(checkpoints.size());
     const bool records = has_reference_records(lab);
     parallel_for(checkpoints.size(), threads, [&](size_t k) {
-        std::optional<Frame> frame;
-        auto r = renders.find(checkpoints[k].name);
-        const RenderPlan* render = r == renders.end() ? nullptr : r->second;
-        if (render) frame.emplace(outputs, *render, lab.id, out_dir);
-        by_checkpoint[k].resize(lab.checks.at(k).size());
-        const std::string starting =
-            starting_code_sentence(lab.root, lab.sources, lab.parts, checkpoints[k].parts);
-        // A copy without the course's records (a student's) leaves its
-        // state checks to the autograder (state_checks_left_out).
-        std::vector<CheckResult> judged;
-        for (size_t i = 0; i < by_checkpoint[k].size(); ++i) {
-            if (!records && lab.checks[k][i].kind == CheckKind::State) continue;
-            judge_check(in, k, i, render, frame ? &*frame : nullptr, starting, by_checkpoint[k][i]);
-            judged.push_back(std::move(by_checkpoint[k][i]));
-        }
-        by_checkpoint[k] = std::move(judged);
-        say_starting_code(starting, by_checkpoint[k]);
-        if (frame) add_state_diff(lab, checkpoints[k], outputs, by_checkpoint[k]);
-        if (frame) {
-            frame->publish();
-            rendered[k] = frame->rendered();
-        }
+        const auto r = renders.find(checkpoints[k].name);
+        judge_checkpoint(in, k, r == renders.end() ? nullptr : r->second, records, judged[k]);
     });
     std::vector<CheckResult> results;
-    for (std::vector<CheckResult>& checks : by_checkpoint)
-        for (CheckResult& c : checks) results.push_back(std::move(c));
+    std::vector<std::string> rendered;
+    for (CheckpointJudged& j : judged) {
+        for (CheckResult& c : j.checks) results.push_back(std::move(c));
+        rendered.push_back(j.rendered);
+        if (!time) continue;
+        time->judge_units += j.time.judge_units;
+        time->judge_frames += j.time.judge_frames;
+        time->report += j.time.report;
+    }
+    if (time) time->judge_units += read_seconds;
     say_frame_guesses(lab, results, nullptr);
     keep_written(out_dir + "/" + lab.id, rendered, results);
     return results;

@@ -1,5 +1,6 @@
-// A lab's status line when its programs did not all build: the files the
-// child's child.json names (checks.hpp, shader_error_status).
+// What course takes from the child's child.json: the files of its programs
+// that did not build, for the lab's status line (checks.hpp,
+// shader_error_status), and where its time went (child_seconds).
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -12,10 +13,33 @@ namespace grading {
 
 using nlohmann::json;
 
-std::string shader_error_status(const ChildOutputs& outputs) {
+namespace {
+
+json child_json(const ChildOutputs& outputs) {
     std::string bytes, why;
     if (!outputs.read("child.json", 256 * 1024, bytes, why)) return {};
-    const json child = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+    return json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+}
+
+}  // namespace
+
+void child_seconds(const ChildOutputs& outputs, LabTime& time) {
+    const json child = child_json(outputs);
+    if (!child.is_object() || !child.contains("seconds") || !child["seconds"].is_object()) return;
+    const json& s = child["seconds"];
+    // The child's word, used only for course grade --verbose's time table.
+    auto take = [&s](const char* key, double& to) {
+        if (s.contains(key) && s[key].is_number()) to = s[key].get<double>();
+    };
+    take("units", time.child_units);
+    take("start", time.child_start);
+    take("render", time.child_render);
+    take("record", time.child_record);
+    take("usage", time.child_usage);
+}
+
+std::string shader_error_status(const ChildOutputs& outputs) {
+    const json child = child_json(outputs);
     if (!child.is_object() || !child.contains("shader_errors") ||
         !child["shader_errors"].is_array())
         return {};

@@ -37,6 +37,11 @@ struct ResultsFile {
 std::string summary_table(const GradeRun& run, bool sandbox = true,
                           std::size_t max_failed = static_cast<std::size_t>(-1));
 
+// Where the run's time went, one line per lab (LabTime) and the total, and
+// the seconds the reports took (`course grade --verbose` prints it; no report
+// holds it: its figures differ from run to run).
+std::string time_table(const GradeRun& run, double reports_seconds);
+
 // How many failed checks `course grade` prints without --verbose.
 constexpr std::size_t kTerminalFailedChecks = 25;
 

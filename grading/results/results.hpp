@@ -81,6 +81,20 @@ private:
 // 5.9, not 5.8999999999999995): rounded to a millionth.
 double rounded_points(double sum);
 
+// Where a lab's grading time went, in seconds (`course grade --verbose`
+// prints it; no report holds it): its child's work, as its child.json says,
+// and course's own. Each is wall time; course's judging sums its threads'.
+struct LabTime {
+    double plan = 0.0;  // course: the job, with the unit checks' random cases
+    // The child: the unit calls, the context and the lab's init, the renders,
+    // and within them the per-draw record and the checks of GL usage.
+    double child_units = 0.0, child_start = 0.0, child_render = 0.0;
+    double child_record = 0.0, child_usage = 0.0;
+    double judge_units = 0.0;   // course: the unit checks against the references
+    double judge_frames = 0.0;  // course: every other check
+    double report = 0.0;        // course: the frames' images for the report
+};
+
 struct LabResult {
     std::string lab;
     LabStatus status;
@@ -98,6 +112,7 @@ struct LabResult {
     // Its child's Mesa did not find its cache's key in --shader-cache
     // (seed_key_missed): said once on stderr, in no report.
     bool shader_cache_missed = false;
+    LabTime time;
 
     double score() const;
     double max_score() const;
