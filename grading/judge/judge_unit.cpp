@@ -235,59 +235,6 @@ const char* const kMatrixRowsNote =
     "Matrices are printed in rows as in the lecture (row r, column c); GLM stores them by "
     "column, m[c][r].";
 
-double unit_points(double max_score, size_t passed, size_t cases) {
-    if (cases == 0 || passed >= cases) return cases == 0 ? 0.0 : max_score;
-    const double tenths = std::floor(
-        max_score * 10.0 * static_cast<double>(passed) / static_cast<double>(cases) + 1e-9);
-    return tenths / 10.0;
-}
-
-int unit_decimals(double tolerance) {
-    if (!(tolerance > 0.0) || !std::isfinite(tolerance)) return 9;
-    const int d = static_cast<int>(std::ceil(-std::log10(tolerance) - 1e-9)) + 1;
-    return std::clamp(d, 2, 9);
-}
-
-std::string unit_number(double value, int decimals) {
-    if (!std::isfinite(value)) return fw::non_finite_name(value);
-    if (std::fabs(value) >= 1e7) return fw::number_text(value, 7);
-    return fw::trimmed_decimals(value, decimals);
-}
-
-std::vector<std::string> matrix_rows(const json& m, int decimals) {
-    if (!m.is_array() || m.empty() || !m[0].is_array() || m[0].empty()) return {};
-    const size_t columns = m.size(), rows = m[0].size();
-    std::vector<std::vector<std::string>> cells(rows, std::vector<std::string>(columns));
-    std::vector<size_t> width(columns, 0);
-    for (size_t c = 0; c < columns; ++c) {
-        if (!m[c].is_array() || m[c].size() != rows) return {};
-        for (size_t r = 0; r < rows; ++r) {
-            const std::optional<double> x = fw::json_number(m[c][r]);
-            if (!x) return {};
-            cells[r][c] = unit_number(*x, decimals);
-            width[c] = std::max(width[c], cells[r][c].size());
-        }
-    }
-    std::vector<std::string> out;
-    for (size_t r = 0; r < rows; ++r) {
-        std::string line = "[ ";
-        for (size_t c = 0; c < columns; ++c)
-            line += (c ? "  " : "") + std::string(width[c] - cells[r][c].size(), ' ') + cells[r][c];
-        out.push_back(line + " ]");
-    }
-    return out;
-}
-
-std::string vector_text(const json& v, int decimals) {
-    if (!v.is_array() || v.empty()) return "";
-    for (const json& x : v)
-        if (!fw::json_number(x)) return "";
-    return "(" +
-           fw::join(v, ", ",
-                    [&](const json& x) { return unit_number(*fw::json_number(x), decimals); }) +
-           ")";
-}
-
 std::string unit_difference(const ReferenceUnit& ref, const json& expected, const json& observed,
                             double tolerance) {
     std::vector<size_t> path;
@@ -310,8 +257,10 @@ std::string unit_difference(const ReferenceUnit& ref, const json& expected, cons
         const std::string c = std::to_string(path[at]), r = std::to_string(path[at + 1]);
         where.push_back("row " + r + ", column " + c + " (GLM m[" + c + "][" + r + "])");
     } else if (ref.shape.kind == ValueShape::Kind::Vector && left == 1) {
-        where.push_back("component " + (path[at] < 4 ? std::string(1, "xyzw"[path[at]])
-                                                     : std::to_string(path[at])));
+        const size_t c = path[at];
+        where.push_back("component " + (c < ref.component_names.size() ? ref.component_names[c]
+                                        : c < 4                        ? std::string(1, "xyzw"[c])
+                                                                       : std::to_string(c)));
     } else {
         for (; at < path.size(); ++at) where.push_back("[" + std::to_string(path[at]) + "]");
     }
@@ -332,6 +281,47 @@ std::string unit_case_text(const ReferenceUnit& ref, const json& args, bool edge
     return out;
 }
 
+namespace {
+
+// Every case against the reference: how many passed, the first failures as
+// the report shows them, and those with a result for recognising mistakes.
+struct CaseTally {
+    size_t passed = 0;
+    std::string first_case, shown;
+    double non_finite = 0.0;            // the first NaN or infinity returned, else 0
+    std::vector<UnitFailure> failures;  // those with a result, for recognising mistakes
+};
+
+CaseTally tally_cases(const ReferenceUnit& ref, const UnitPlan& plan, const json& units, double tol,
+                      const std::string& starting) {
+    CaseTally t;
+    int shown_count = 0;
+    for (const UnitCase& c : plan.cases) {
+        const json* entry = units.contains(c.id) ? &units[c.id] : nullptr;
+        CaseOutcome outcome = evaluate(ref, c, entry, tol);
+        if (outcome.passed) {
+            ++t.passed;
+            continue;
+        }
+        // A part still at its starting code: its first difference only,
+        // not the whole expected value, which would be the answer.
+        const std::string text =
+            starting.empty() ? unit_case_text(ref, c.args, c.edge, outcome.expected,
+                                              outcome.observed, outcome.why, tol)
+                             : "  " + call_text(ref, c.args) + (c.edge ? " [edge case]" : "") +
+                                   "\n    " + outcome.why + "\n";
+        if (shown_count++ == 0) t.first_case = text;
+        if (shown_count <= kShownCases) t.shown += text;
+        if (outcome.observed && t.non_finite == 0.0)
+            t.non_finite = first_non_finite(*outcome.observed);
+        if (outcome.observed && t.failures.size() < kMistakeCases)
+            t.failures.push_back({c.args, std::move(outcome.expected), *outcome.observed});
+    }
+    return t;
+}
+
+}  // namespace
+
 void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan, unsigned seed,
                 const json* units, const std::string& units_why, CheckResult& r,
                 const std::string& starting) {
@@ -351,26 +341,12 @@ void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan
         " (relative where |expected| > 1)\nExpected: every case equal to course's reference\n";
     if (!units)
         return verdict(r, 0, plan.cases.size(), head + "Observed: no results: " + units_why);
-    size_t passed = 0;
-    std::string shown;
-    int shown_count = 0;
-    double non_finite = 0.0;            // the first NaN or infinity returned, else 0
-    std::vector<UnitFailure> failures;  // those with a result, for recognising mistakes
-    for (const UnitCase& c : plan.cases) {
-        const json* entry = units->contains(c.id) ? &(*units)[c.id] : nullptr;
-        CaseOutcome outcome = evaluate(ref, c, entry, tol);
-        if (outcome.passed) {
-            ++passed;
-            continue;
-        }
-        const std::string text = unit_case_text(ref, c.args, c.edge, outcome.expected,
-                                                outcome.observed, outcome.why, tol);
-        if (shown_count++ == 0) r.first_case = text;
-        if (shown_count <= kShownCases) shown += text;
-        if (outcome.observed && non_finite == 0.0) non_finite = first_non_finite(*outcome.observed);
-        if (outcome.observed && failures.size() < kMistakeCases)
-            failures.push_back({c.args, std::move(outcome.expected), *outcome.observed});
-    }
+    const CaseTally tally = tally_cases(ref, plan, *units, tol, starting);
+    const size_t passed = tally.passed;
+    const std::vector<UnitFailure>& failures = tally.failures;
+    const std::string& shown = tally.shown;
+    const double non_finite = tally.non_finite;
+    r.first_case = tally.first_case;
     std::string out = head + "Observed: " + std::to_string(passed) + " of " +
                       std::to_string(plan.cases.size()) + " cases passed";
     if (!shown.empty()) {
@@ -387,7 +363,8 @@ void judge_unit(const LabData& lab, const UnitCheck& check, const UnitPlan& plan
         r.diagnosis = fw::join(diagnosis, "\n");
         if (!diagnosis.empty()) out += "\n" + r.diagnosis;
         out += "\nFirst failures:\n";
-        if (ref.shape.kind == ValueShape::Kind::Matrix) out += std::string(kMatrixRowsNote) + "\n";
+        if (ref.shape.kind == ValueShape::Kind::Matrix && starting.empty())
+            out += std::string(kMatrixRowsNote) + "\n";
         out += shown;
     }
     verdict(r, passed, plan.cases.size(), out);

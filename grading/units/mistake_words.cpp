@@ -60,6 +60,11 @@ const char* plain_cause(Mistake m) {
                    "vectors (p' = M p) the matrix next to the point acts first, so A * B "
                    "applies B first and differs from B * A; check the order of your "
                    "multiplications";
+        case Mistake::PerspectiveDepth:
+            return " has the depth interpolated perspective-correctly, weighted by 1/w like "
+                   "the colours: window depth z_w is affine in the window, so it takes the "
+                   "screen weights as they are (sum lambda_i z_i); keep the division by w for "
+                   "the colours only";
         default:
             return nullptr;
     }

@@ -229,6 +229,8 @@ std::string_view mistake_id(Mistake mistake) {
             return "off-by-one";
         case Mistake::NotNormalised:
             return "not-normalised";
+        case Mistake::PerspectiveDepth:
+            return "perspective-depth";
     }
     return "unknown";
 }

@@ -32,7 +32,8 @@ constexpr Mistake kMistakes[] = {Mistake::Transpose,
                                  Mistake::NotNormalised,
                                  Mistake::FlippedAxis,
                                  Mistake::LastColumnForDiagonal,
-                                 Mistake::LengthSquared};
+                                 Mistake::LengthSquared,
+                                 Mistake::PerspectiveDepth};
 
 // A result that differs from `expected` everywhere (numbers become NaN,
 // which matches nothing), or only in element `k` of a list.
@@ -175,6 +176,7 @@ json ReferenceRecorder::entry() const {
                   {"rows", s.rows},
                   {"list", s.list}}},
                 {"element_names", ref_.element_names},
+                {"component_names", ref_.component_names},
                 {"tolerance", ref_.tolerance},
                 {"domains", json::array()},
                 {"reference", table_json(*reference_)},
@@ -292,6 +294,9 @@ ReferenceUnit recorded_reference(const std::string& name, const json& entry) {
     unit.shape.list = field(name, shape, "list", T::boolean).get<bool>();
     unit.element_names =
         field(name, entry, "element_names", T::array).get<std::vector<std::string>>();
+    if (entry.contains("component_names"))
+        unit.component_names =
+            field(name, entry, "component_names", T::array).get<std::vector<std::string>>();
     if (entry.contains("off_by_one"))
         unit.off_by_one = field(name, entry, "off_by_one", T::string).get<std::string>();
     for (const json& a : field(name, entry, "alternatives", T::array)) {

@@ -181,6 +181,10 @@ bool register_reference(std::string_view lab_dir, ReferenceUnit unit) {
     if (!unit.element_names.empty() && !unit.shape.list)
         throw fw::Error("reference '" + unit.lab + "." + unit.function.name +
                         "' names the elements of a result that is not a list");
+    if (!unit.component_names.empty() && (unit.shape.kind != ValueShape::Kind::Vector ||
+                                          int(unit.component_names.size()) != unit.shape.rows))
+        throw fw::Error("reference '" + unit.lab + "." + unit.function.name +
+                        "' names components that its result, not a vector of as many, lacks");
     ByName& lab = registry()[unit.lab];
     const auto existing = lab.find(unit.function.name);
     if (existing != lab.end() && unit.recorded && !existing->second.recorded) return false;

@@ -37,6 +37,12 @@
 //   - grading::element_names({"a", "b", ...}): names for the elements of a
 //     std::vector result, for the report (an aggregate's fields are named
 //     by the lab's fw::FieldsOf, units.hpp);
+//   - grading::component_names({"r", "g", "b", "depth"}): what each
+//     component of a vector result means, for the report's "first
+//     difference" (without them: x, y, z, w);
+//   - grading::perspective_depth(&fn): fn computes the result with the depth
+//     interpolated perspective-correctly (divided by w like the colours)
+//     where window depth is affine in the window;
 //   - a number: the tolerance (default 1e-4; a check may set its own);
 //   - grading::redraw_when(&fn): fn(arguments) true means a drawn argument
 //     list is drawn again (a degenerate triangle the function is not defined
@@ -171,6 +177,7 @@ enum class Mistake {
     LastColumnForDiagonal,   // "last-column-for-diagonal": diagonal entries put in the last column
     LengthSquared,           // "length-squared": divided by a length squared, not the length
     OffByOne,                // "off-by-one": a number 1 more or 1 less than expected
+    PerspectiveDepth,        // "perspective-depth": window depth weighted by 1/w like a colour
 };
 
 // What the function returns when written with one mistake, computed by
@@ -196,10 +203,21 @@ Alternative length_squared(R (*fn)(A...)) {
             ShapeOf<std::decay_t<R>>::get()};
 }
 
+template <class R, class... A>
+Alternative perspective_depth(R (*fn)(A...)) {
+    return {Mistake::PerspectiveDepth, fw::unit_function("perspective depth", fn),
+            ShapeOf<std::decay_t<R>>::get()};
+}
+
 struct ElementNames {
     std::vector<std::string> names;
 };
 inline ElementNames element_names(std::vector<std::string> names) { return {std::move(names)}; }
+
+struct ComponentNames {
+    std::vector<std::string> names;
+};
+inline ComponentNames component_names(std::vector<std::string> names) { return {std::move(names)}; }
 
 // What an off-by-one result means for this function, after "is the expected
 // number plus or minus 1: " ("a mipmap level counted from 1, ...").
@@ -226,7 +244,9 @@ struct ReferenceUnit {
     double tolerance = 1e-4;                 // default; a check may set its own
     ValueShape shape;                        // of the result
     std::vector<std::string> element_names;  // of a list result's elements, where known
-    std::vector<Alternative> alternatives;   // for recognising mistakes
+    // Of a vector result's components, where they mean more than x, y, z, w.
+    std::vector<std::string> component_names;
+    std::vector<Alternative> alternatives;  // for recognising mistakes
     // Where a result 1 off names Mistake::OffByOne: the function's words for
     // it (grading::off_by_one); empty: it names nothing.
     std::string off_by_one;
@@ -255,6 +275,9 @@ inline void add_to_reference(ReferenceUnit& unit, Alternative alternative) {
 }
 inline void add_to_reference(ReferenceUnit& unit, ElementNames names) {
     unit.element_names = std::move(names.names);
+}
+inline void add_to_reference(ReferenceUnit& unit, ComponentNames names) {
+    unit.component_names = std::move(names.names);
 }
 inline void add_to_reference(ReferenceUnit& unit, OffByOneWords words) {
     unit.off_by_one = std::move(words.words);

@@ -12,7 +12,9 @@ namespace rasterizer {
 // when d = z + w >= 0. For each edge cur -> next: keep cur when it is in
 // front; when d changes sign along the edge, add the point at
 // t = d_cur / (d_cur - d_next), clip position and colour both mixed by t.
-// One corner behind gives 4 vertices, two give 3, three give none.
+// One corner behind gives 4 vertices, two give 3, three give none. A corner
+// on the plane (d = 0) is in front, and an edge from it to a corner behind
+// (or back) still changes sign: the point added is that corner again.
 std::vector<ClipVertex> clip_near(const ClipVertex tri[3]) {
     // BEGIN SOLUTION
     // STUDENT: return {tri[0], tri[1], tri[2]};  // TODO: keep, cut or drop each edge

@@ -7,9 +7,8 @@ namespace shadows {
 
 void set_shadow_stencil(bool on) {
     // BEGIN SOLUTION
-    // STUDENT: (void)on;  // TODO: with on: glEnable(GL_STENCIL_TEST), glStencilMask(0xFF),
-    // STUDENT: // glStencilFunc(GL_EQUAL, 0, 0xFF), glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-    // STUDENT: // without: glDisable(GL_STENCIL_TEST)
+    // STUDENT: (void)on;  // TODO: with on, a stencil test that draws a fragment only where the
+    // STUDENT: // stencil still holds 0 and adds 1 where it draws (every bit written); off: no test
     if (!on) {
         glDisable(GL_STENCIL_TEST);
         return;
@@ -24,8 +23,8 @@ void set_shadow_stencil(bool on) {
 void attach_depth(GLuint framebuffer, const fw::Texture2D& depth) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     // BEGIN SOLUTION
-    // STUDENT: (void)depth;  // TODO: glFramebufferTexture2D(..., GL_DEPTH_ATTACHMENT, ...),
-    // STUDENT: // then glDrawBuffer(GL_NONE) and glReadBuffer(GL_NONE)
+    // STUDENT: (void)depth;  // TODO: `depth` as this framebuffer's depth buffer, and no colour
+    // STUDENT: // buffer to draw into or read from
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
@@ -35,8 +34,9 @@ void attach_depth(GLuint framebuffer, const fw::Texture2D& depth) {
 void set_shadow_compare(bool pcf) {
     const GLint filter = pcf ? GL_LINEAR : GL_NEAREST;
     // BEGIN SOLUTION
-    // STUDENT: (void)filter;  // TODO: glTexParameteri for GL_TEXTURE_COMPARE_MODE,
-    // STUDENT: // GL_TEXTURE_COMPARE_FUNC, GL_TEXTURE_MIN_FILTER and GL_TEXTURE_MAG_FILTER
+    // STUDENT: (void)filter;  // TODO: the bound depth texture compares a reference with its
+    // STUDENT: // depth (passing where the reference is at most the depth) instead of returning
+    // STUDENT: // the depth; both its filters `filter`
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);

@@ -226,6 +226,7 @@ TEST_CASE("mistake IDs are the stable names the reports print") {
     CHECK(grading::mistake_id(Mistake::LastColumnForDiagonal) == "last-column-for-diagonal");
     CHECK(grading::mistake_id(Mistake::LengthSquared) == "length-squared");
     CHECK(grading::mistake_id(Mistake::OffByOne) == "off-by-one");
+    CHECK(grading::mistake_id(Mistake::PerspectiveDepth) == "perspective-depth");
 }
 
 TEST_CASE("each mistake is recognised against the labs' references") {
@@ -638,6 +639,36 @@ TEST_CASE("long values are printed whole: every matrix of a list, every vector")
                     "    first difference: [5], component x: expected 0, got 7\n") !=
           std::string::npos);
     CHECK(quad.find(grading::kMatrixRowsNote) == std::string::npos);
+}
+
+TEST_CASE("a vector's components are named by what they mean; depth weighted by 1/w is named") {
+    // Lab 11's interpolate() returns (r, g, b, depth): the student's depth
+    // interpolated like the colour, sum (lambda_i / w_i) z_i / sum lambda_i / w_i.
+    const Student depth_by_w = [](const json& a, const json& e) {
+        json o = e;
+        if (!a[6].get<bool>()) return o;
+        double sum = 0.0, norm = 0.0, total = 0.0;
+        for (int i = 0; i < 3; ++i) total += a[5][i].get<double>();
+        for (int i = 0; i < 3; ++i) {
+            const double k = a[5][i].get<double>() / total / a[4][i].get<double>();
+            sum += k * a[3][i].get<double>();
+            norm += k;
+        }
+        o[3] = sum / norm;
+        return o;
+    };
+    const json edge = json::array({json::array({1, 0, 0}), json::array({0, 1, 0}),
+                                   json::array({0, 0, 1}), json::array({0.2, 0.2, 0.8}),
+                                   json::array({1, 4, 1}), json::array({0.25, 0.5, 0.25}), true});
+    bool passed = true;
+    const std::string out =
+        judge("rasterizer", "interpolate", 1e-4, {edge}, depth_by_w, 20, &passed);
+    MESSAGE(out);
+    CHECK_FALSE(passed);
+    CHECK(out.find("first difference: component depth: expected ") != std::string::npos);
+    CHECK(out.find("component w") == std::string::npos);
+    CHECK(out.find("Likely mistake (perspective-depth): your vector has the depth interpolated "
+                   "perspective-correctly") != std::string::npos);
 }
 
 TEST_CASE("a case without a result shows the expected value and why") {

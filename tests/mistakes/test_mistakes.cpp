@@ -76,7 +76,7 @@ namespace {
 const std::set<std::string> kNamedIds = {
     "transpose", "inverse", "reversed-product", "radians-for-degrees", "degrees-for-radians",
     "flipped-angle", "translation-in-bottom-row", "not-normalised", "flipped-axis",
-    "last-column-for-diagonal", "length-squared", "off-by-one",
+    "last-column-for-diagonal", "length-squared", "off-by-one", "perspective-depth",
     // buffer references' mistakes (labs/*/grading)
     "no-half-step", "gravity-twice", "never-moved", "groups-rounded-down", "midpoints-not-pushed"};
 

@@ -119,6 +119,22 @@ glm::vec4 ref_interpolate(glm::vec3 c0, glm::vec3 c1, glm::vec3 c2, glm::vec3 z,
     return glm::vec4(glm::vec3(sum / norm), float(depth));
 }
 
+// The mistake of interpolating the depth as the colour is: weighted by 1/w
+// where `perspective` is on (grading::perspective_depth).
+glm::vec4 ref_interpolate_depth_by_w(glm::vec3 c0, glm::vec3 c1, glm::vec3 c2, glm::vec3 z,
+                                     glm::vec3 w, glm::vec3 weights, bool perspective) {
+    glm::vec4 out = ref_interpolate(c0, c1, c2, z, w, weights, perspective);
+    if (!perspective) return out;
+    const glm::vec3 lambda = weights / (weights[0] + weights[1] + weights[2]);
+    double sum = 0.0, norm = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        sum += double(lambda[i]) / w[i] * z[i];
+        norm += double(lambda[i]) / w[i];
+    }
+    out.w = float(sum / norm);
+    return out;
+}
+
 // No area: the weights are not defined.
 bool degenerate(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2) { return cross(a, b, c) == 0.0; }
 
@@ -164,19 +180,25 @@ COURSE_REFERENCE(line_dda, &ref_line_dda,
 COURSE_REFERENCE(line_bresenham, &ref_line_bresenham,
                  {grading::integer(0, 31), grading::integer(0, 31), grading::integer(0, 31),
                   grading::integer(0, 31)})
-COURSE_REFERENCE(top_left, &ref_top_left_both, {grading::vec(2, -4, 4), grading::vec(2, -4, 4)})
+COURSE_REFERENCE(top_left, &ref_top_left_both, {grading::vec(2, -4, 4), grading::vec(2, -4, 4)},
+                 grading::component_names({"a -> b top-left", "b -> a top-left"}))
 COURSE_REFERENCE(covers, &ref_covers_centres, {on_subpixels(8), on_subpixels(8), on_subpixels(8)})
 COURSE_REFERENCE(fill_triangle_scanline, &ref_scanline_centres,
                  {on_subpixels(8), on_subpixels(8), on_subpixels(8)})
 COURSE_REFERENCE(barycentric, &ref_barycentric,
                  {on_subpixels(32), on_subpixels(32), on_subpixels(32), on_subpixels(32)}, 1e-3,
-                 grading::redraw_when(&degenerate))
+                 grading::redraw_when(&degenerate),
+                 grading::component_names({"lambda_a", "lambda_b", "lambda_c"}))
 COURSE_REFERENCE(interpolate, &ref_interpolate,
                  {grading::vec(3, 0, 1), grading::vec(3, 0, 1), grading::vec(3, 0, 1),
                   grading::vec(3, 0, 1), grading::vec(3, 0.1, 10), grading::vec(3, 0.05, 1),
-                  grading::boolean()})
-COURSE_REFERENCE(depth_test, &ref_depth_test, {grading::scalar(0, 1), grading::scalar(0, 1)})
+                  grading::boolean()},
+                 grading::component_names({"r", "g", "b", "depth"}),
+                 grading::perspective_depth(&ref_interpolate_depth_by_w))
+COURSE_REFERENCE(depth_test, &ref_depth_test, {grading::scalar(0, 1), grading::scalar(0, 1)},
+                 grading::component_names({"passes", "depth stored"}))
 COURSE_REFERENCE(clip_near, &ref_clip_near,
                  {grading::vec(4, -2, 2), grading::vec(4, -2, 2), grading::vec(4, -2, 2)}, 1e-4)
 COURSE_REFERENCE(to_window, &ref_to_window,
-                 {grading::vec(4, -2, 2), grading::integer(1, 64), grading::integer(1, 64)})
+                 {grading::vec(4, -2, 2), grading::integer(1, 64), grading::integer(1, 64)},
+                 grading::component_names({"x_w", "y_w", "z_w", "w"}))
