@@ -111,7 +111,10 @@ std::string colour_name(const fw::Rgba8& c) {
         name = "pink";
     if (name == "brown") return name;
     if (hi < 0.45) return "dark " + name;
-    if (saturation < 0.45 && hi > 0.8) return "light " + name;
+    // Pale: half white or more, (0.5, 0.5, 1) light blue; washed out towards
+    // grey, (0.5, 0.6, 0.7) greyish blue.
+    if (saturation < 0.55 && hi > 0.8) return "light " + name;
+    if (saturation < 0.35) return "greyish " + name;
     return name;
 }
 

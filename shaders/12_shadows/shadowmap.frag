@@ -13,8 +13,8 @@ layout(location = 0) out vec4 frag_color;
 void main() {
     float lit = 1.0;
     // BEGIN SOLUTION
-    // STUDENT: // TODO: the light's window coordinates p = v_light.xyz / v_light.w * 0.5 + 0.5,
-    // STUDENT: // then lit = texture(u_shadow_map, vec3(p.xy, p.z - u_bias))
+    // STUDENT: // TODO: p, the fragment's position in the light's window (v_light is its clip
+    // STUDENT: // position), then lit: the shadow map's comparison at p.xy of p.z less the bias
     vec3 p = v_light.xyz / v_light.w * 0.5 + 0.5;
     lit = texture(u_shadow_map, vec3(p.xy, p.z - u_bias));
     // END SOLUTION

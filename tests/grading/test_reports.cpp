@@ -10,6 +10,7 @@
 #include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "grading/report/prairielearn_results.hpp"
 #include "grading/report/report_text.hpp"
 #include "grading/report/reports.hpp"
+#include "grading/run/repository.hpp"
 #include "tests/grading/report_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -294,6 +296,37 @@ TEST_CASE("a failed image check's words never say the same colour was expected a
     CHECK((light_first || dark_first));
     for (const std::string& w : {light_words, dark_words})
         CHECK(words.find("expected " + w + ", found " + w) == std::string::npos);
+}
+
+TEST_CASE(
+    "a colour a lab's sheet names, as in \"light blue (0.5, 0.5, 1)\", has that name in reports") {
+    // Every "NAME (r, g, b)" of every lab's sheet, r, g and b in [0, 1], whose
+    // last word is a colour the reports use: the reports' name holds it.
+    const std::set<std::string> words = {"red",     "green",  "blue",  "yellow", "cyan",
+                                         "magenta", "orange", "white", "black",  "grey",
+                                         "purple",  "pink",   "brown"};
+    const std::regex named(R"(([a-z]+) \((\d*\.?\d+), (\d*\.?\d+), (\d*\.?\d+)\))");
+    int checked = 0;
+    namespace fs = std::filesystem;
+    for (const auto& entry : fs::directory_iterator(fs::path(grading::source_root()) / "labs")) {
+        const fs::path sheet = entry.path() / "README.md";
+        if (!fs::is_regular_file(sheet)) continue;
+        std::ifstream in(sheet);
+        const std::string text((std::istreambuf_iterator<char>(in)), {});
+        for (std::sregex_iterator m(text.begin(), text.end(), named), end; m != end; ++m) {
+            const std::string word = (*m)[1];
+            const double r = std::stod((*m)[2]), g = std::stod((*m)[3]), b = std::stod((*m)[4]);
+            if (!words.count(word) || std::max({r, g, b}) > 1.0) continue;
+            auto byte = [](double v) { return static_cast<std::uint8_t>(v * 255.0 + 0.5); };
+            const std::string name = grading::colour_name({byte(r), byte(g), byte(b), 255});
+            INFO(sheet.string() << ": " << m->str() << " is named " << name);
+            CHECK((" " + name + " ").find(" " + word + " ") != std::string::npos);
+            ++checked;
+        }
+    }
+    CHECK(checked > 20);
+    CHECK(grading::colour_name({128, 128, 255, 255}) == "light blue");
+    CHECK(grading::colour_name({128, 153, 179, 255}) == "greyish blue");
 }
 
 TEST_CASE("a failed frame that is another checkpoint's expected image is named so") {
