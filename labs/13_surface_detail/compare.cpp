@@ -39,15 +39,16 @@ nlohmann::json compare_stats(const CastImage& cast, const fw::Image& gl, const f
         unshadowed += cast.shadowed[k] ? 0 : 1;
     }
     const Counts& c = cast.counts;
-    return {{"rays", {{"primary", c.primary}, {"shadow", c.shadow}, {"total", c.primary + c.shadow}}},
-            {"intersection_tests", c.tests},
-            {"triangles", triangles},
-            {"lights", lights},
-            {"hits", hits},
-            {"differ", differ},
-            {"shadowed", shadowed},
-            {"color_differ", color_differ},
-            {"color_differ_unshadowed", unshadowed}};
+    return {
+        {"rays", {{"primary", c.primary}, {"shadow", c.shadow}, {"total", c.primary + c.shadow}}},
+        {"intersection_tests", c.tests},
+        {"triangles", triangles},
+        {"lights", lights},
+        {"hits", hits},
+        {"differ", differ},
+        {"shadowed", shadowed},
+        {"color_differ", color_differ},
+        {"color_differ_unshadowed", unshadowed}};
 }
 
 }  // namespace surface_detail

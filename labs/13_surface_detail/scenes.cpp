@@ -39,7 +39,8 @@ HeightMap height_map() {
     HeightMap map{64, std::vector<float>(64 * 64)};
     for (int j = 0; j < 64; ++j)
         for (int i = 0; i < 64; ++i) {
-            const float x = static_cast<float>(i % 16) - 7.5f, y = static_cast<float>(j % 16) - 7.5f;
+            const float x = static_cast<float>(i % 16) - 7.5f,
+                        y = static_cast<float>(j % 16) - 7.5f;
             map.h[static_cast<size_t>(j * 64 + i)] = glm::max(0.0f, 1.0f - (x * x + y * y) / 36.0f);
         }
     return map;
@@ -66,18 +67,19 @@ std::vector<Triangle> ray_scene() {
     const glm::vec3 grey(0.8f), red(0.9f, 0.1f, 0.1f), blue(0.1f, 0.1f, 0.9f);
     std::vector<Triangle> s = {{{-20, 0, 6}, {20, 0, 6}, {0, 0, -30}, grey}};
     // The cube x in [-1.5, -0.5], y in [0, 1], z in [-0.6, 0.4], no bottom.
-    const glm::vec3 c[8] = {{-1.5f, 0, 0.4f}, {-0.5f, 0, 0.4f}, {-0.5f, 1, 0.4f},
-                            {-1.5f, 1, 0.4f}, {-1.5f, 0, -0.6f}, {-0.5f, 0, -0.6f},
+    const glm::vec3 c[8] = {{-1.5f, 0, 0.4f},  {-0.5f, 0, 0.4f},  {-0.5f, 1, 0.4f},
+                            {-1.5f, 1, 0.4f},  {-1.5f, 0, -0.6f}, {-0.5f, 0, -0.6f},
                             {-0.5f, 1, -0.6f}, {-1.5f, 1, -0.6f}};
-    for (const glm::ivec4 q : {glm::ivec4(0, 1, 2, 3), glm::ivec4(1, 5, 6, 2),
-                               glm::ivec4(5, 4, 7, 6), glm::ivec4(4, 0, 3, 7),
-                               glm::ivec4(3, 2, 6, 7)}) {
+    for (const glm::ivec4 q :
+         {glm::ivec4(0, 1, 2, 3), glm::ivec4(1, 5, 6, 2), glm::ivec4(5, 4, 7, 6),
+          glm::ivec4(4, 0, 3, 7), glm::ivec4(3, 2, 6, 7)}) {
         s.push_back({c[q.x], c[q.y], c[q.z], red});
         s.push_back({c[q.x], c[q.z], c[q.w], red});
     }
     // The pyramid: base x in [0.6, 1.6], z in [-0.6, 0.4], apex (1.1, 1.2, -0.1).
     const glm::vec3 apex(1.1f, 1.2f, -0.1f);
-    const glm::vec3 base[4] = {{0.6f, 0, 0.4f}, {1.6f, 0, 0.4f}, {1.6f, 0, -0.6f}, {0.6f, 0, -0.6f}};
+    const glm::vec3 base[4] = {
+        {0.6f, 0, 0.4f}, {1.6f, 0, 0.4f}, {1.6f, 0, -0.6f}, {0.6f, 0, -0.6f}};
     for (int k = 0; k < 4; ++k) s.push_back({base[k], base[(k + 1) % 4], apex, blue});
     return s;
 }

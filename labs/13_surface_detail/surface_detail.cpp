@@ -98,28 +98,28 @@ public:
         flat_ = &programs.load({"flat.vert", "flat.frag"});
         show_ = &programs.load({"screen.vert", "show.frag"});
         squares_vbo_ = fw::Buffer::from(bump_squares(), GL_ARRAY_BUFFER, "squares vertices");
-        squares_ = fw::VertexArray(fw::VertexArrayDesc{
-            .vertices = &squares_vbo_,
-            .layout = fw::VertexLayout::of<BumpVertex>()
-                          .attr(A_POSITION, &BumpVertex::position)
-                          .attr(A_NORMAL, &BumpVertex::normal)
-                          .attr(A_TANGENT, &BumpVertex::tangent)
-                          .attr(A_BITANGENT, &BumpVertex::bitangent)
-                          .attr(A_UV, &BumpVertex::uv),
-            .label = "squares"});
+        squares_ = fw::VertexArray(
+            fw::VertexArrayDesc{.vertices = &squares_vbo_,
+                                .layout = fw::VertexLayout::of<BumpVertex>()
+                                              .attr(A_POSITION, &BumpVertex::position)
+                                              .attr(A_NORMAL, &BumpVertex::normal)
+                                              .attr(A_TANGENT, &BumpVertex::tangent)
+                                              .attr(A_BITANGENT, &BumpVertex::bitangent)
+                                              .attr(A_UV, &BumpVertex::uv),
+                                .label = "squares"});
         heights_ = height_map();
         normal_tex_ = nearest_texture(heights_.size, GL_RGBA32F, "normal map");
         cube_ = fw::TextureCube({kFaceSize, GL_RGBA8, GL_NEAREST, GL_NEAREST, "environment"});
         upload_cube_faces(cube_, cube_faces());
         scene_ = ray_scene();
         scene_vbo_ = fw::Buffer::from(flat_vertices(scene_), GL_ARRAY_BUFFER, "scene vertices");
-        scene_vao_ = fw::VertexArray(fw::VertexArrayDesc{
-            .vertices = &scene_vbo_,
-            .layout = fw::VertexLayout::of<FlatVertex>()
-                          .attr(A_POSITION, &FlatVertex::position)
-                          .attr(A_NORMAL, &FlatVertex::normal)
-                          .attr(A_COLOR, &FlatVertex::color),
-            .label = "ray scene"});
+        scene_vao_ = fw::VertexArray(
+            fw::VertexArrayDesc{.vertices = &scene_vbo_,
+                                .layout = fw::VertexLayout::of<FlatVertex>()
+                                              .attr(A_POSITION, &FlatVertex::position)
+                                              .attr(A_NORMAL, &FlatVertex::normal)
+                                              .attr(A_COLOR, &FlatVertex::color),
+                                .label = "ray scene"});
         gl_fb_ = fw::Framebuffer({kCast, kCast, "GL's image"});
         cpu_tex_ = nearest_texture(kCast, GL_RGBA8, "ray-cast image");
         screen_ = fw::VertexArray::blank("viewport triangle");

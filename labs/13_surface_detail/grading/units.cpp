@@ -44,8 +44,8 @@ bool degenerate_frame(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec2 uv0, g
     const glm::dvec3 nn(n);
     const glm::dvec3 to = t - glm::dot(nn, t) * nn;
     if (glm::length(to) < 0.1 * glm::length(t) + 1e-9) return true;
-    const glm::dvec3 bo = b - glm::dot(nn, b) * nn - glm::dot(glm::normalize(to), b) *
-                                                         glm::normalize(to);
+    const glm::dvec3 bo =
+        b - glm::dot(nn, b) * nn - glm::dot(glm::normalize(to), b) * glm::normalize(to);
     return glm::length(bo) < 0.1 * glm::length(b) + 1e-9;
 }
 
@@ -54,8 +54,8 @@ bool degenerate_frame(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec2 uv0, g
 glm::vec3 ref_pixel_direction(int i, int j) {
     const double s = std::sqrt(0.5), k = std::tan(M_PI / 8.0);
     const double x = 2.0 * (i + 0.5) / 64.0 - 1.0, y = 2.0 * (j + 0.5) / 64.0 - 1.0;
-    const glm::dvec3 d = x * k * glm::dvec3(1, 0, 0) + y * k * glm::dvec3(0, s, -s) -
-                         glm::dvec3(0, s, s);
+    const glm::dvec3 d =
+        x * k * glm::dvec3(1, 0, 0) + y * k * glm::dvec3(0, s, -s) - glm::dvec3(0, s, s);
     return glm::vec3(glm::normalize(d));
 }
 

@@ -49,7 +49,8 @@ FaceCoord cube_coord(glm::vec3 r) {
         second = std::fmax(a.x, a.y);
     }
     const float s = (sc / ma + 1) / 2, t = (tc / ma + 1) / 2;
-    const float margin = std::fmin((ma - second) / ma, std::fmin(std::fabs(s - 0.5f), std::fabs(t - 0.5f)));
+    const float margin =
+        std::fmin((ma - second) / ma, std::fmin(std::fabs(s - 0.5f), std::fabs(t - 0.5f)));
     return {face, s, t, margin};
 }
 
@@ -69,21 +70,24 @@ TEST_CASE("surface-detail: normal_map() and tangent_frame() at the sheet's numbe
     for (int j = 0; j < 64; ++j)
         for (int i = 0; i < 64; ++i) {
             const float x = i % 16 - 7.5f, y = j % 16 - 7.5f;
-            map.h[static_cast<size_t>(j * 64 + i)] = std::fmax(0.0f, 1.0f - (x * x + y * y) / 36.0f);
+            map.h[static_cast<size_t>(j * 64 + i)] =
+                std::fmax(0.0f, 1.0f - (x * x + y * y) / 36.0f);
         }
     const std::vector<glm::vec3> n = normal_map(map, 4.0f);
     for (const glm::ivec2 t : {glm::ivec2(5, 6), glm::ivec2(10, 9), glm::ivec2(40, 24)})
-        CHECK(glm::length(n[static_cast<size_t>(t.y * 64 + t.x)] - dome_normal(t.x, t.y, 4)) < 1e-5f);
+        CHECK(glm::length(n[static_cast<size_t>(t.y * 64 + t.x)] - dome_normal(t.x, t.y, 4)) <
+              1e-5f);
     // Between the domes the map is flat.
     CHECK(glm::length(n[0] - glm::vec3(0, 0, 1)) < 1e-6f);
     // Square B: u along +y, v along -x.
-    const glm::mat3 b = tangent_frame({0.5f, -1.5f, 0}, {3.5f, -1.5f, 0}, {3.5f, 1.5f, 0},
-                                      {0, 1}, {0, 0}, {1, 0}, {0, 0, 1});
+    const glm::mat3 b = tangent_frame({0.5f, -1.5f, 0}, {3.5f, -1.5f, 0}, {3.5f, 1.5f, 0}, {0, 1},
+                                      {0, 0}, {1, 0}, {0, 0, 1});
     CHECK(glm::length(b[0] - glm::vec3(0, 1, 0)) < 1e-5f);
     CHECK(glm::length(b[1] - glm::vec3(-1, 0, 0)) < 1e-5f);
     // A normal not perpendicular to the triangle: T and B come out perpendicular to it.
     const glm::vec3 tilted = glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f));
-    const glm::mat3 g = tangent_frame({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0}, {1, 0}, {0, 1}, tilted);
+    const glm::mat3 g =
+        tangent_frame({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0}, {1, 0}, {0, 1}, tilted);
     CHECK(std::fabs(glm::dot(g[0], tilted)) < 1e-5f);
     CHECK(std::fabs(glm::dot(g[1], tilted)) < 1e-5f);
     CHECK(std::fabs(glm::dot(g[0], g[1])) < 1e-5f);
