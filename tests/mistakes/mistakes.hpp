@@ -1216,7 +1216,7 @@ constexpr const char* kMistakesJson = R"json(
    "lab": "13_surface_detail",
    "file": "labs/13_surface_detail/raycast.cpp",
    "find": "const Ray shadow{p + kShadowEpsilon * n, towards};",
-   "replace": "const Ray shadow{p, towards};",
+   "replace": "(void)n;\n    const Ray shadow{p, towards};",
    "why": "starts the shadow ray on the surface itself, which it then meets again at t of about 1e-7: shadow acne"},
   {"id": "surface-hit-behind-origin",
    "lab": "13_surface_detail",
