@@ -4,6 +4,7 @@
 // map rule (the GL specification, 4.3 core, table 8.19), the ray counts by
 // the deck's cost formula; never read from a reference image or the lab.
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -192,5 +193,23 @@ TEST_CASE("surface-detail: checkpoints.json: its probes and stats hold for the s
         lab.lab, lab.renderer, 10,
         [&](const fw::Checkpoint& cp, const fw::ParamValues&, const fw::RenderOutput& out) {
             fw::test::check_probes_and_stats(cp.checks, out);
+        });
+}
+
+TEST_CASE(
+    "surface-detail: each checkpoint's frame, warm, in milliseconds (a figure, not a check)") {
+    Lab lab;
+    fw::test::for_each_checkpoint(
+        lab.lab, lab.renderer, 10,
+        [&](const fw::Checkpoint& cp, const fw::ParamValues&, const fw::RenderOutput&) {
+            fw::test::Settings settings;
+            for (const auto& [name, value] : cp.params.items())
+                settings.emplace_back(name,
+                                      value.is_string() ? value.get<std::string>() : value.dump());
+            const auto start = std::chrono::steady_clock::now();
+            lab.render(settings);
+            const std::chrono::duration<double, std::milli> ms =
+                std::chrono::steady_clock::now() - start;
+            MESSAGE(cp.name << ": " << ms.count() << " ms");
         });
 }
