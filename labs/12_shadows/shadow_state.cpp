@@ -7,8 +7,9 @@ namespace shadows {
 
 void set_shadow_stencil(bool on) {
     // BEGIN SOLUTION
-    // STUDENT: (void)on;  // TODO: with on, a stencil test that draws a fragment only where the
-    // STUDENT: // stencil still holds 0 and adds 1 where it draws (every bit written); off: no test
+    // STUDENT: (void)on;  // TODO: with on, a stencil test (glStencilFunc, glStencilOp,
+    // STUDENT: // glStencilMask) that draws a fragment only where the stencil still holds 0 and
+    // STUDENT: // adds 1 where it draws, every bit written; off: no stencil test
     if (!on) {
         glDisable(GL_STENCIL_TEST);
         return;
@@ -23,8 +24,9 @@ void set_shadow_stencil(bool on) {
 void attach_depth(GLuint framebuffer, const fw::Texture2D& depth) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     // BEGIN SOLUTION
-    // STUDENT: (void)depth;  // TODO: `depth` as this framebuffer's depth buffer, and no colour
-    // STUDENT: // buffer to draw into or read from
+    // STUDENT: (void)depth;  // TODO: `depth` as this framebuffer's depth buffer
+    // STUDENT: // (glFramebufferTexture2D), and no colour buffer to draw into or read from
+    // STUDENT: // (glDrawBuffer, glReadBuffer)
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
@@ -34,9 +36,9 @@ void attach_depth(GLuint framebuffer, const fw::Texture2D& depth) {
 void set_shadow_compare(bool pcf) {
     const GLint filter = pcf ? GL_LINEAR : GL_NEAREST;
     // BEGIN SOLUTION
-    // STUDENT: (void)filter;  // TODO: the bound depth texture compares a reference with its
-    // STUDENT: // depth (passing where the reference is at most the depth) instead of returning
-    // STUDENT: // the depth; both its filters `filter`
+    // STUDENT: (void)filter;  // TODO: with glTexParameteri, the bound depth texture compares
+    // STUDENT: // a reference with its depth (passing where the reference is at most the depth)
+    // STUDENT: // instead of returning the depth; both its filters `filter`
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
