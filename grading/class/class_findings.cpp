@@ -1,5 +1,7 @@
 #include "grading/class/class_findings.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
 #include <nlohmann/json.hpp>
@@ -9,6 +11,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/release/release.hpp"
+#include "grading/report/report_text.hpp"
 #include "grading/results/results.hpp"
 
 namespace grading::cls {
@@ -155,26 +158,156 @@ std::vector<std::string> check_texts(const std::string& html) {
     return texts;
 }
 
+// What one lab's report gives the page, in the order it is read: a
+// checkpoint's rate, or a name (with the frame to show where the
+// checkpoint's image check failed, when that file exists).
+struct Event {
+    bool rate = false;
+    std::string checkpoint;
+    bool hidden = false, passed = false;
+    Naming naming;
+    std::string frame;
+};
+
+struct LabReport {
+    bool rated = false;  // its results.json is of its form
+    std::vector<Event> events;
+};
+
+// One test of a report; a test not of its form gives what it gave before
+// the part it lacks (no rate, no name from it).
+void read_test(const std::string& lab, const std::string& rel, const json& test, LabReport& r) {
+    const json& extra = test.at("extra_data");
+    const std::string checkpoint = extra.at("checkpoint");
+    const bool passed = test.at("status") == "passed";
+    r.events.push_back(
+        {true, checkpoint, test.value("visibility", "visible") != "visible", passed, {}, ""});
+    const json& checks = extra.at("checks");
+    const std::vector<std::string> texts = check_texts(test.value("output", ""));
+    if (passed || texts.size() != checks.size()) return;  // no name without its check
+    bool frame_failed = false;
+    for (const json& c : checks)
+        frame_failed |= c.at("kind") == name_of(CheckKind::Image) && !c.at("passed");
+    const std::string frame = rel + "/" + lab + "/" + checkpoint + ".png";
+    for (size_t i = 0; i < checks.size(); ++i) {
+        if (checks[i].at("passed")) continue;
+        for (const Naming& n : namings_in(checks[i].at("kind"), texts[i]))
+            r.events.push_back({false, checkpoint, false, false, n, frame_failed ? frame : ""});
+    }
+}
+
+LabReport read_report(const fs::path& file, const std::string& lab, const std::string& rel) {
+    LabReport r;
+    json results;
+    try {
+        results = json::parse(read_file(file));
+        if (!results.at("tests").is_array()) return r;
+    } catch (const std::exception&) {
+        return r;
+    }
+    r.rated = true;
+    for (const json& test : results["tests"]) {
+        try {
+            read_test(lab, rel, test, r);
+        } catch (const json::exception&) {
+            // A test not of its form: no rate, no name from it.
+        }
+    }
+    return r;
+}
+
+// What stands for a file's bytes between runs: its size, inode and times
+// ("" when it is missing). A report is written whole, never in place.
+std::string stamp_of(const fs::path& file) {
+    struct stat st;
+    if (::stat(file.c_str(), &st) != 0) return "";
+    return std::to_string(st.st_size) + ' ' + std::to_string(st.st_ino) + ' ' +
+           std::to_string(st.st_mtim.tv_sec) + '.' + std::to_string(st.st_mtim.tv_nsec) + ' ' +
+           std::to_string(st.st_ctim.tv_sec) + '.' + std::to_string(st.st_ctim.tv_nsec);
+}
+
+json report_json(const std::string& stamp, const LabReport& r) {
+    json events = json::array();
+    for (const Event& e : r.events)
+        events.push_back({e.rate, e.checkpoint, e.hidden, e.passed, e.naming.key, e.naming.name,
+                          e.naming.sentence, e.frame});
+    return {{"stamp", stamp}, {"rated", r.rated}, {"events", events}};
+}
+
+LabReport report_of(const json& j) {
+    LabReport r;
+    r.rated = j.at("rated");
+    for (const json& e : j.at("events"))
+        r.events.push_back(
+            {e.at(0), e.at(1), e.at(2), e.at(3), {e.at(4), e.at(5), e.at(6)}, e.at(7)});
+    return r;
+}
+
+// What each lab's report of a submission gave, kept in DIR/.class/findings/
+// KEY.json (when DIR/.class is there: grade-class's DIR), read again only
+// when the report's stamp changed.
+class KeptReports {
+public:
+    KeptReports(const fs::path& out, const std::string& key)
+        : file_(out / ".class" / "findings" / (key + ".json")),
+          on_(fs::is_directory(out / ".class")) {
+        try {
+            if (on_ && fs::exists(file_)) kept_ = json::parse(read_file(file_));
+        } catch (const std::exception&) {
+            kept_ = json::object();
+        }
+        if (!kept_.is_object()) kept_ = json::object();
+    }
+
+    LabReport read(const fs::path& results, const std::string& lab, const std::string& rel) {
+        const std::string stamp = on_ ? stamp_of(results) : "";
+        try {
+            const auto it = kept_.find(lab);
+            if (!stamp.empty() && it != kept_.end() && it->at("stamp") == stamp) {
+                now_[lab] = *it;
+                return report_of(*it);
+            }
+        } catch (const json::exception&) {
+            // Not of its form: read the report again.
+        }
+        const LabReport r = read_report(results, lab, rel);
+        if (!stamp.empty()) now_[lab] = report_json(stamp, r);
+        return r;
+    }
+
+    void save() {
+        if (!on_ || now_ == kept_) return;
+        std::error_code ec;
+        try {
+            fs::create_directories(file_.parent_path());
+            report::write_text_file(file_.string() + ".part", now_.dump() + "\n");
+            fs::rename(file_.string() + ".part", file_);
+        } catch (const std::exception&) {
+            fs::remove(file_, ec);
+        }
+    }
+
+private:
+    fs::path file_;
+    bool on_;
+    json kept_ = json::object(), now_ = json::object();
+};
+
 class Reader {
 public:
     Reader(const fs::path& out, ClassFindings& f) : out_(out), f_(f) {}
 
-    void read(const ClassRow& row, const std::string& lab) {
+    void read(const ClassRow& row, const std::string& lab, KeptReports& kept) {
         const std::string rel = "students/" + row.submission.key + "/" + lab;
-        json results;
-        try {
-            results = json::parse(read_file(out_ / rel / "results.json"));
-            if (!results.at("tests").is_array()) return;
-        } catch (const std::exception&) {
-            return;
-        }
+        const LabReport r = kept.read(out_ / rel / "results.json", lab, rel);
+        if (!r.rated) return;
         f_.rated[lab] += students_of(row);
-        for (const json& test : results["tests"]) {
-            try {
-                read_test(row, lab, rel, test);
-            } catch (const json::exception&) {
-                // A test not of its form: no rate, no name from it.
-            }
+        for (const Event& e : r.events) {
+            if (e.rate)
+                rate(lab, e.checkpoint, e.hidden, e.passed, row);
+            else
+                add(row, lab, e.checkpoint, e.naming,
+                    !e.frame.empty() && fs::is_regular_file(out_ / e.frame) ? e.frame : "");
         }
     }
 
@@ -201,27 +334,6 @@ public:
     }
 
 private:
-    void read_test(const ClassRow& row, const std::string& lab, const std::string& rel,
-                   const json& test) {
-        const json& extra = test.at("extra_data");
-        const std::string checkpoint = extra.at("checkpoint");
-        const bool passed = test.at("status") == "passed";
-        rate(lab, checkpoint, test.value("visibility", "visible") != "visible", passed, row);
-        const json& checks = extra.at("checks");
-        const std::vector<std::string> texts = check_texts(test.value("output", ""));
-        if (passed || texts.size() != checks.size()) return;  // no name without its check
-        bool frame_failed = false;
-        for (const json& c : checks)
-            frame_failed |= c.at("kind") == name_of(CheckKind::Image) && !c.at("passed");
-        const std::string frame = rel + "/" + lab + "/" + checkpoint + ".png";
-        for (size_t i = 0; i < checks.size(); ++i) {
-            if (checks[i].at("passed")) continue;
-            for (const Naming& n : namings_in(checks[i].at("kind"), texts[i]))
-                add(row, lab, checkpoint, n,
-                    frame_failed && fs::is_regular_file(out_ / frame) ? frame : "");
-        }
-    }
-
     void rate(const std::string& lab, const std::string& checkpoint, bool hidden, bool passed,
               const ClassRow& row) {
         std::vector<CheckpointRate>& rates = f_.rates[lab];
@@ -260,13 +372,16 @@ ClassFindings read_findings(const fs::path& out, const std::vector<ClassRow>& ro
                             const std::vector<std::pair<std::string, std::string>>& labs) {
     ClassFindings f;
     Reader reader(out, f);
-    for (const ClassRow& row : rows)
+    for (const ClassRow& row : rows) {
+        KeptReports kept(out, row.submission.key);
         for (const auto& [id, dir] : labs) {
             const auto g = row.labs.find(id);
             if (g != row.labs.end() && g->second.status != "not built" &&
                 g->second.status != "not graded")
-                reader.read(row, id);
+                reader.read(row, id, kept);
         }
+        kept.save();
+    }
     reader.finish(labs);
     return f;
 }

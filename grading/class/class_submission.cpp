@@ -8,6 +8,7 @@
 #include "framework/error.hpp"
 #include "grading/class/class_rows.hpp"
 #include "grading/class/content_hash.hpp"
+#include "grading/class/taken.hpp"
 #include "grading/platforms/autograder.hpp"
 #include "grading/platforms/run_logged.hpp"
 #include "grading/platforms/submitted_files.hpp"
@@ -96,7 +97,10 @@ void not_graded(const std::string& lab, const fs::path& dir, const std::string& 
 class Grader {
 public:
     Grader(const ClassContext& c, const Submission& s)
-        : c_(c), work_(c.out / ".class" / "work" / s.key), reports_(c.out / "students" / s.key) {
+        : c_(c),
+          submission_(s),
+          work_(c.out / ".class" / "work" / s.key),
+          reports_(c.out / "students" / s.key) {
         row_.submission = s;
     }
 
@@ -112,6 +116,13 @@ public:
 
 private:
     void grade() {
+        Unpacked ahead;
+        const std::string source = source_key(row_.submission, c_.deadline, ahead);
+        const std::string key = source.empty() ? "" : content_hash(source + '\n' + c_.take_hash);
+        if (!key.empty() && resume_all(key, ahead)) return;
+        row_ = ClassRow{};
+        row_.submission = submission_;
+        file_hash_.clear();
         const Unpacked u = unpack(row_.submission, work_ / "submitted", c_.deadline);
         row_.late = u.late_commits;
         if (!u.ok) {
@@ -126,6 +137,9 @@ private:
         }
         take_files();
         row_.graded = u.commit.empty() ? content_hash(taken_text_) : u.commit;
+        if (!key.empty())
+            write_taken(taken_file(),
+                        {key, row_.graded, row_.missing, row_.extra, file_hash_, files_txt_});
         std::vector<std::string> pending;
         for (const auto& [id, dir] : c_.labs)
             if (!resumed(id, dir)) pending.push_back(id);
@@ -171,6 +185,38 @@ private:
             text += "  " + row_.extra[i] + "\n";
         fs::create_directories(reports_);
         write_atomically(reports_ / "files.txt", text);
+        files_txt_ = text;
+    }
+
+    fs::path taken_file() const {
+        return c_.out / ".class" / "taken" / (row_.submission.key + ".json");
+    }
+
+    // Every lab taken from an earlier run, without unpacking: when what was
+    // taken from the submission then is kept under the same key (the same
+    // files, chosen from the same student files) and every lab's hash is
+    // the same.
+    bool resume_all(const std::string& key, const Unpacked& u) {
+        const std::optional<Taken> t = read_taken(taken_file());
+        if (!t || t->key != key) return false;
+        file_hash_ = t->hashes;
+        for (const auto& [id, dir] : c_.labs)
+            if (!resumed(id, dir)) return false;
+        row_.late = u.late_commits;
+        row_.graded = t->graded;
+        row_.missing = t->missing;
+        row_.extra = t->extra;
+        std::string kept;
+        try {
+            kept = read_file(reports_ / "files.txt");
+        } catch (const std::exception&) {
+            kept.clear();
+        }
+        if (kept != t->files_txt) {
+            fs::create_directories(reports_);
+            write_atomically(reports_ / "files.txt", t->files_txt);
+        }
+        return true;
     }
 
     std::string lab_hash(const std::string& id, const std::string& dir) const {
@@ -294,11 +340,12 @@ private:
     }
 
     const ClassContext& c_;
+    const Submission& submission_;
     fs::path work_, reports_;
     ClassRow row_;
     std::map<std::string, fs::path> chosen_;
     std::map<std::string, std::string> file_hash_, hashes_;
-    std::string taken_text_;
+    std::string taken_text_, files_txt_;
 };
 
 }  // namespace

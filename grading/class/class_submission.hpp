@@ -27,6 +27,9 @@ struct ClassContext {
     // Per lab id: the hash of what its grade depends on besides the
     // submission (course, lab, the lab's checkpoints, references, options).
     std::map<std::string, std::string> course_hash;
+    // The hash of what choosing a submission's files depends on besides the
+    // submission: course, the student files and their starting versions.
+    std::string take_hash;
     std::optional<std::time_t> deadline;
     std::string timeout, backend;
     const LabBuilder* builder = nullptr;

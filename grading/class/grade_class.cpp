@@ -148,7 +148,12 @@ void prepare(ClassContext& c, const GradeClassOptions& o) {
                 students.push_back(file);
     if (students.empty())
         throw fw::UsageError("the labs chosen have no student files: nothing to grade");
-    for (const auto& [rel, text] : students) c.files.push_back(rel);
+    std::string taken = binaries;
+    for (const auto& [rel, text] : students) {
+        c.files.push_back(rel);
+        taken += rel + '\0' + content_hash(text) + '\n';
+    }
+    c.take_hash = content_hash(taken);
     const fs::path grader = c.out / ".class";
     fs::create_directories(grader);
     write_student_files(students, grader);

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 
 #include "framework/error.hpp"
+#include "grading/class/content_hash.hpp"
 #include "grading/class/unpack.hpp"
 
 namespace grading::cls {
@@ -143,6 +145,35 @@ Unpacked unpack(const Submission& s, const fs::path& dest, std::optional<std::ti
     if (u.ok && s.kind != SubmissionKind::Git && deadline && s.submitted)
         u.late_commits = *s.submitted > *deadline ? 1 : 0;
     return u;
+}
+
+std::string source_key(const Submission& s, std::optional<std::time_t> deadline, Unpacked& u,
+                       const UnpackLimits& limits) {
+    u = Unpacked{};
+    std::optional<std::string> key;
+    std::error_code ec;
+    switch (s.kind) {
+        case SubmissionKind::Folder:
+            key = folder_key(s.path, limits);
+            break;
+        case SubmissionKind::Archive:
+            if (const auto size = fs::file_size(s.path, ec); !ec && size <= limits.bytes) {
+                std::ifstream in(s.path, std::ios::binary);
+                const std::string bytes((std::istreambuf_iterator<char>(in)),
+                                        std::istreambuf_iterator<char>());
+                if (in.eof() && bytes.size() == size) key = "archive\n" + content_hash(bytes);
+            }
+            break;
+        case SubmissionKind::Git:
+            u = commit_before(s.path, deadline);
+            if (u.ok) key = "git\n" + u.commit;
+            break;
+    }
+    if (!key) return "";
+    u.ok = true;
+    if (s.kind != SubmissionKind::Git && deadline && s.submitted)
+        u.late_commits = *s.submitted > *deadline ? 1 : 0;
+    return *key + "\n" + std::to_string(limits.bytes) + " " + std::to_string(limits.files);
 }
 
 std::time_t parse_time(const std::string& text) {

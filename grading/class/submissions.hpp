@@ -65,6 +65,13 @@ struct Unpacked {
 Unpacked unpack(const Submission& s, const std::filesystem::path& dest,
                 std::optional<std::time_t> deadline, const UnpackLimits& limits = {});
 
+// What identifies the files unpack() would write for `s`, found without
+// writing them: the hash of a folder's files, of an archive's bytes, or git's
+// commit. `u` says what unpack() would of its commit and lateness. "" when
+// that cannot be said without unpacking (then unpack it: it may refuse).
+std::string source_key(const Submission& s, std::optional<std::time_t> deadline, Unpacked& u,
+                       const UnpackLimits& limits = {});
+
 // "2026-12-04T23:59" or "2026-12-04 23:59:00", in UTC, or with a zone
 // ("+01:00", "Z"); throws fw::UsageError saying what it expects.
 std::time_t parse_time(const std::string& text);

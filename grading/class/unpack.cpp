@@ -4,9 +4,13 @@
 #include <archive_entry.h>
 #include <git2.h>
 
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <mutex>
+
+#include "grading/class/content_hash.hpp"
 
 namespace grading::cls {
 
@@ -76,6 +80,31 @@ Unpacked copy_folder(const fs::path& from, const fs::path& dest, const UnpackLim
     Unpacked u;
     u.ok = true;
     return u;
+}
+
+std::optional<std::string> folder_key(const fs::path& from, const UnpackLimits& limits) {
+    Budget budget{limits};
+    std::vector<std::string> lines;
+    std::error_code ec;
+    fs::recursive_directory_iterator it(from, fs::directory_options::none, ec), end;
+    for (; !ec && it != end; it.increment(ec)) {
+        const fs::file_status st = fs::symlink_status(it->path());
+        if (it->path().filename() == ".git" && fs::is_directory(st)) {
+            it.disable_recursion_pending();
+            continue;
+        }
+        if (!fs::is_regular_file(st)) continue;
+        if (!budget.over(fs::file_size(it->path(), ec)).empty() || ec) return std::nullopt;
+        std::ifstream in(it->path(), std::ios::binary);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (!in.good() && !in.eof()) return std::nullopt;
+        lines.push_back(it->path().lexically_relative(from).string() + '\0' + content_hash(text));
+    }
+    if (ec) return std::nullopt;
+    std::sort(lines.begin(), lines.end());
+    std::string all = "folder\n";
+    for (const std::string& line : lines) all += line + '\n';
+    return content_hash(all);
 }
 
 Unpacked extract_archive(const fs::path& archive, const fs::path& dest,
@@ -182,6 +211,60 @@ int write_entry(const char* root, const git_tree_entry* entry, void* payload) {
 
 }  // namespace
 
+namespace {
+
+// The newest commit of HEAD's history at or before `deadline`, into
+// `chosen`; `u` counts the newer ones, or says why there is none.
+bool choose_commit(git_repository* repo, const std::string& name,
+                   std::optional<std::time_t> deadline, Owned<git_commit, git_commit_free>& chosen,
+                   Unpacked& u) {
+    Owned<git_revwalk, git_revwalk_free> walk;
+    if (git_revwalk_new(&walk.p, repo) != 0 || git_revwalk_push_head(walk.p) != 0) {
+        u = refused(git_message("the repository " + name + " has no commit on HEAD"));
+        return false;
+    }
+    git_revwalk_sorting(walk.p, GIT_SORT_TIME);
+    git_oid oid;
+    while (git_revwalk_next(&oid, walk.p) == 0) {
+        Owned<git_commit, git_commit_free> commit;
+        if (git_commit_lookup(&commit.p, repo, &oid) != 0) {
+            u = refused(git_message("cannot read a commit"));
+            return false;
+        }
+        if (deadline && git_commit_time(commit.p) > *deadline) {
+            ++u.late_commits;
+            continue;
+        }
+        std::swap(chosen.p, commit.p);
+        break;
+    }
+    if (!chosen.p) u = refused("the repository " + name + " has no commit before the deadline");
+    return chosen.p != nullptr;
+}
+
+std::string commit_id(const git_commit* commit) {
+    char id[GIT_OID_HEXSZ + 1] = {};
+    git_oid_tostr(id, sizeof id, git_commit_id(commit));
+    return id;
+}
+
+}  // namespace
+
+Unpacked commit_before(const fs::path& repository, std::optional<std::time_t> deadline) {
+    static std::once_flag once;
+    std::call_once(once, [] { git_libgit2_init(); });
+    Owned<git_repository, git_repository_free> repo;
+    if (git_repository_open(&repo.p, repository.c_str()) != 0)
+        return refused(
+            git_message("the repository " + repository.filename().string() + " cannot be opened"));
+    Unpacked u;
+    Owned<git_commit, git_commit_free> chosen;
+    if (!choose_commit(repo.p, repository.filename().string(), deadline, chosen, u)) return u;
+    u.commit = commit_id(chosen.p);
+    u.ok = true;
+    return u;
+}
+
 Unpacked checkout_before(const fs::path& repository, const fs::path& dest,
                          std::optional<std::time_t> deadline, const UnpackLimits& limits) {
     static std::once_flag once;
@@ -190,31 +273,10 @@ Unpacked checkout_before(const fs::path& repository, const fs::path& dest,
     if (git_repository_open(&repo.p, repository.c_str()) != 0)
         return refused(
             git_message("the repository " + repository.filename().string() + " cannot be opened"));
-    Owned<git_revwalk, git_revwalk_free> walk;
-    if (git_revwalk_new(&walk.p, repo.p) != 0 || git_revwalk_push_head(walk.p) != 0)
-        return refused(git_message("the repository " + repository.filename().string() +
-                                   " has no commit on HEAD"));
-    git_revwalk_sorting(walk.p, GIT_SORT_TIME);
     Unpacked u;
-    git_oid oid;
     Owned<git_commit, git_commit_free> chosen;
-    while (git_revwalk_next(&oid, walk.p) == 0) {
-        Owned<git_commit, git_commit_free> commit;
-        if (git_commit_lookup(&commit.p, repo.p, &oid) != 0)
-            return refused(git_message("cannot read a commit"));
-        if (deadline && git_commit_time(commit.p) > *deadline) {
-            ++u.late_commits;
-            continue;
-        }
-        std::swap(chosen.p, commit.p);
-        break;
-    }
-    if (!chosen.p)
-        return refused("the repository " + repository.filename().string() +
-                       " has no commit before the deadline");
-    char id[GIT_OID_HEXSZ + 1] = {};
-    git_oid_tostr(id, sizeof id, git_commit_id(chosen.p));
-    u.commit = id;
+    if (!choose_commit(repo.p, repository.filename().string(), deadline, chosen, u)) return u;
+    u.commit = commit_id(chosen.p);
     Owned<git_tree, git_tree_free> tree;
     if (git_commit_tree(&tree.p, chosen.p) != 0)
         return refused(git_message("cannot read the tree of commit " + u.commit));

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "grading/class/submissions.hpp"
 
@@ -13,6 +14,12 @@ namespace grading::cls {
 // A folder's regular files (links and anything else left out).
 Unpacked copy_folder(const std::filesystem::path& from, const std::filesystem::path& dest,
                      const UnpackLimits& limits);
+
+// The content hash of what copy_folder would copy from `from` (each regular
+// file's path and hash), without copying; none where copy_folder would
+// refuse it or a file cannot be read.
+std::optional<std::string> folder_key(const std::filesystem::path& from,
+                                      const UnpackLimits& limits);
 
 // A .zip or .tar(.gz) through libarchive: entries with an absolute path or a
 // `..` refuse the archive; links and devices are left out.
@@ -25,5 +32,11 @@ Unpacked extract_archive(const std::filesystem::path& archive, const std::filesy
 // ones. Links and submodules are left out.
 Unpacked checkout_before(const std::filesystem::path& repository, const std::filesystem::path& dest,
                          std::optional<std::time_t> deadline, const UnpackLimits& limits);
+
+// The commit checkout_before would take, and the late commits, without
+// writing its tree (Unpacked::ok false where checkout_before refuses it for
+// its history).
+Unpacked commit_before(const std::filesystem::path& repository,
+                       std::optional<std::time_t> deadline);
 
 }  // namespace grading::cls
