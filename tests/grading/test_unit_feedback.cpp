@@ -173,7 +173,8 @@ float side_sign(Side s) { return s == Side::Left ? -1.0f : 1.0f; }
 
 std::string judge(const std::string& lab, const std::string& function, double tolerance,
                   const std::vector<json>& edge, const Student& f, int random = 20,
-                  bool* passed = nullptr, grading::CheckResult* result = nullptr) {
+                  bool* passed = nullptr, grading::CheckResult* result = nullptr,
+                  const std::string& starting = "") {
     const ReferenceUnit& ref = reference(lab.c_str(), function.c_str());
     grading::UnitPlan plan{"cp", 0, {}};
     for (const json& args : edge)
@@ -192,7 +193,7 @@ std::string judge(const std::string& lab, const std::string& function, double to
     grading::UnitCheck check;
     check.function = function;
     check.tolerance = tolerance;
-    grading::judge_unit(data, check, plan, 42, &units, "", r);
+    grading::judge_unit(data, check, plan, 42, &units, "", r, starting);
     if (passed) *passed = r.passed;
     if (result) *result = r;
     return r.output;
@@ -669,6 +670,26 @@ TEST_CASE("a vector's components are named by what they mean; depth weighted by 
     CHECK(out.find("component w") == std::string::npos);
     CHECK(out.find("Likely mistake (perspective-depth): your vector has the depth interpolated "
                    "perspective-correctly") != std::string::npos);
+}
+
+TEST_CASE("a part at its starting code is shown its first difference, not the answer") {
+    // Lab 12's shadow_matrix() as the starting code returns it: the identity.
+    const Student identity = [](const json&, const json&) { return js(glm::mat4(1.0f)); };
+    const json light = json::array({1, 1, 0, 0});
+    const std::string starting = "shadow_matrix() is still the starting code.";
+    const std::string out = judge("shadows", "shadow_matrix", 1e-4, {json::array({light})},
+                                  identity, 5, nullptr, nullptr, starting);
+    MESSAGE(out);
+    CHECK(out.find(starting) != std::string::npos);
+    CHECK(out.find("  shadow_matrix(vec4(1, 1, 0, 0)) [edge case]\n"
+                   "    first difference: row 0, column 1 (GLM m[1][0]): expected -1, got 0\n") !=
+          std::string::npos);
+    CHECK(out.find("expected (rows):") == std::string::npos);
+    CHECK(out.find(grading::kMatrixRowsNote) == std::string::npos);
+    // Past the starting code, the whole expected matrix beside the student's.
+    const std::string later = judge("shadows", "shadow_matrix", 1e-4, {json::array({light})},
+                                    identity, 5, nullptr, nullptr, "");
+    CHECK(later.find("expected (rows):") != std::string::npos);
 }
 
 TEST_CASE("a case without a result shows the expected value and why") {
