@@ -21,7 +21,8 @@ std::vector<fw::Param> params() {
             .key('B'),
         fw::Param::choice(kEnv, kEnvs, Env::Fresnel)
             .help("reflect: the mirror; refract: glass, one surface; fresnel: both, mixed by "
-                  "Schlick's F (envmap)")
+                  "Schlick's F; normal: the cube map itself, read along the sphere's normal "
+                  "(envmap)")
             .key('E'),
         fw::Param::number(kIor, 1.5)
             .range(1.0, 2.5)

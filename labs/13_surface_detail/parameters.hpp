@@ -16,9 +16,16 @@ constexpr fw::Choice<Scene> kScenes[] = {
 enum class Normals { Bumped = NORMALS_BUMPED, Interpolated = NORMALS_INTERPOLATED };
 constexpr fw::Choice<Normals> kNormals[] = {{Normals::Bumped, "bumped"},
                                             {Normals::Interpolated, "interpolated"}};
-enum class Env { Fresnel = ENV_FRESNEL, Reflect = ENV_REFLECT, Refract = ENV_REFRACT };
-constexpr fw::Choice<Env> kEnvs[] = {
-    {Env::Fresnel, "fresnel"}, {Env::Reflect, "reflect"}, {Env::Refract, "refract"}};
+enum class Env {
+    Fresnel = ENV_FRESNEL,
+    Reflect = ENV_REFLECT,
+    Refract = ENV_REFRACT,
+    Normal = ENV_NORMAL
+};
+constexpr fw::Choice<Env> kEnvs[] = {{Env::Fresnel, "fresnel"},
+                                     {Env::Reflect, "reflect"},
+                                     {Env::Refract, "refract"},
+                                     {Env::Normal, "normal"}};
 enum class View { Split, Cpu, Gl, Difference };
 constexpr fw::Choice<View> kViews[] = {
     {View::Split, "split"}, {View::Cpu, "cpu"}, {View::Gl, "gl"}, {View::Difference, "difference"}};

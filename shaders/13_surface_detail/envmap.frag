@@ -38,7 +38,9 @@ void main() {
     float cosine = clamp(dot(-incident, n), 0.0, 1.0);
     fresnel = f0 + (1.0 - f0) * pow(1.0 - cosine, 5.0);
     // END SOLUTION
-    vec3 c = u_env_mode == ENV_REFLECT   ? reflected
+    // ENV_NORMAL: the cube map itself, each face where the normal points at it.
+    vec3 c = u_env_mode == ENV_NORMAL    ? texture(u_env, n).rgb
+             : u_env_mode == ENV_REFLECT ? reflected
              : u_env_mode == ENV_REFRACT ? refracted
                                          : mix(refracted, reflected, fresnel);
     frag_color = vec4(c, 1.0);

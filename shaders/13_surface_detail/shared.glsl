@@ -12,6 +12,7 @@
 #define ENV_FRESNEL 0
 #define ENV_REFLECT 1
 #define ENV_REFRACT 2
+#define ENV_NORMAL 3
 // flat.frag's u_output: the lit colour, or the triangle's number for the comparison.
 #define OUTPUT_COLOR 0
 #define OUTPUT_ID 1
