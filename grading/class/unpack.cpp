@@ -248,35 +248,40 @@ std::string commit_id(const git_commit* commit) {
     return id;
 }
 
+// The repository opened (libgit2 set up once for the process) and its
+// commit chosen for the deadline; false with `u` saying why where either fails.
+bool open_chosen(const fs::path& repository, std::optional<std::time_t> deadline,
+                 Owned<git_repository, git_repository_free>& repo,
+                 Owned<git_commit, git_commit_free>& chosen, Unpacked& u) {
+    static std::once_flag once;
+    std::call_once(once, [] { git_libgit2_init(); });
+    const std::string name = repository.filename().string();
+    if (git_repository_open(&repo.p, repository.c_str()) != 0) {
+        u = refused(git_message("the repository " + name + " cannot be opened"));
+        return false;
+    }
+    if (!choose_commit(repo.p, name, deadline, chosen, u)) return false;
+    u.commit = commit_id(chosen.p);
+    return true;
+}
+
 }  // namespace
 
 Unpacked commit_before(const fs::path& repository, std::optional<std::time_t> deadline) {
-    static std::once_flag once;
-    std::call_once(once, [] { git_libgit2_init(); });
     Owned<git_repository, git_repository_free> repo;
-    if (git_repository_open(&repo.p, repository.c_str()) != 0)
-        return refused(
-            git_message("the repository " + repository.filename().string() + " cannot be opened"));
-    Unpacked u;
     Owned<git_commit, git_commit_free> chosen;
-    if (!choose_commit(repo.p, repository.filename().string(), deadline, chosen, u)) return u;
-    u.commit = commit_id(chosen.p);
+    Unpacked u;
+    if (!open_chosen(repository, deadline, repo, chosen, u)) return u;
     u.ok = true;
     return u;
 }
 
 Unpacked checkout_before(const fs::path& repository, const fs::path& dest,
                          std::optional<std::time_t> deadline, const UnpackLimits& limits) {
-    static std::once_flag once;
-    std::call_once(once, [] { git_libgit2_init(); });
     Owned<git_repository, git_repository_free> repo;
-    if (git_repository_open(&repo.p, repository.c_str()) != 0)
-        return refused(
-            git_message("the repository " + repository.filename().string() + " cannot be opened"));
-    Unpacked u;
     Owned<git_commit, git_commit_free> chosen;
-    if (!choose_commit(repo.p, repository.filename().string(), deadline, chosen, u)) return u;
-    u.commit = commit_id(chosen.p);
+    Unpacked u;
+    if (!open_chosen(repository, deadline, repo, chosen, u)) return u;
     Owned<git_tree, git_tree_free> tree;
     if (git_commit_tree(&tree.p, chosen.p) != 0)
         return refused(git_message("cannot read the tree of commit " + u.commit));
