@@ -670,6 +670,18 @@ TEST_CASE("a vector's components are named by what they mean; depth weighted by 
     CHECK(out.find("component w") == std::string::npos);
     CHECK(out.find("Likely mistake (perspective-depth): your vector has the depth interpolated "
                    "perspective-correctly") != std::string::npos);
+    // Another mistake of the same function, the colour left affine where it
+    // should be perspective-correct: it names no perspective-depth.
+    const Student colour_affine = [](const json& a, const json& e) {
+        if (!a[6].get<bool>()) return e;
+        json args = a;
+        args[6] = false;
+        return reference("rasterizer", "interpolate").function.call(args);
+    };
+    const std::string other =
+        judge("rasterizer", "interpolate", 1e-4, {edge}, colour_affine, 20, &passed);
+    CHECK_FALSE(passed);
+    CHECK(other.find("perspective-depth") == std::string::npos);
 }
 
 TEST_CASE("a part at its starting code is shown its first difference, not the answer") {
