@@ -179,13 +179,13 @@ struct ChildSetup {
 
 // One lab's result from what its child left.
 LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& child,
-                      const std::string& out, int threads) {
+                      const std::string& out, int threads, EarlyUnits& early) {
     LabResult result;
     result.lab = lab.id;
     result.status = child.run.status;
     result.log = child.run.log;
     result.seconds = child.run.seconds;
-    result.checks = judge_lab(lab, plan, *child.outputs, out, threads, &result.time);
+    result.checks = judge_lab(lab, plan, *child.outputs, out, threads, &result.time, &early);
     child_seconds(*child.outputs, result.time);
     result.hidden_left_out = lab.file.hidden_checkpoints;
     result.hidden_points_left_out = lab.file.hidden_points;
@@ -220,10 +220,12 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
     }
     std::vector<LabResult> results(labs.size());
     std::vector<char> ran(labs.size(), 0);  // the lab's child ran to its end
+    // Each lab's unit results parsed as they come, while its frames are drawn.
+    EarlyUnits early;
     using Ended = std::pair<size_t, LabChild>;
     Pipeline<Ended> judging([&](Ended& e) {
         results[e.first] =
-            judge_child(*labs[e.first], plans[e.first], e.second, setup.out, threads());
+            judge_child(*labs[e.first], plans[e.first], e.second, setup.out, threads(), early);
         results[e.first].time.plan = plan_seconds[e.first];
         ran[e.first] = e.second.run.ok();
     });
@@ -231,7 +233,9 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
         judging.push({i, std::move(child)});
     };
     run_lab_children(setup.lab_binary, jobs, setup.backend, setup.limits, setup.user, setup.cache,
-                     ended);
+                     ended, [&early](const std::string& path, const std::string& bytes) {
+                         early.record_done(path, bytes);
+                     });
     judging.finish();
     // Which file is wrong, for a lab whose frames failed
     // (grading/diagnosis/file_isolation.hpp): once its child is done, so that a

@@ -37,6 +37,7 @@
 #include "framework/checkpoints.hpp"
 #include "framework/image.hpp"
 #include "grading/diagnosis/diagnosis.hpp"
+#include "grading/judge/early_units.hpp"
 #include "grading/results/results.hpp"
 #include "grading/run/child.hpp"
 #include "grading/run/repository.hpp"
@@ -234,8 +235,10 @@ StateLeftOut state_checks_left_out(const LabData& lab);
 // checkpoints are judged on up to `threads` threads; the results come in the
 // checkpoints' order whatever the number. Where `time` is given, the
 // judging's time goes into its judge_units, judge_frames and report.
+// `early`, where given, may hold units.json parsed already (early_units.hpp).
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    const ChildOutputs& outputs, const std::string& out_dir,
-                                   int threads = 1, LabTime* time = nullptr);
+                                   int threads = 1, LabTime* time = nullptr,
+                                   EarlyUnits* early = nullptr);
 
 }  // namespace grading

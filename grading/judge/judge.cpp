@@ -126,13 +126,17 @@ void judge_frame_usage(Frame& frame, CheckResult& r) {
 }
 
 // units.json as the child wrote it, when the plan has unit cases; else (or
-// when it cannot be read) null, and why in `why`.
-json read_units(const LabPlan& plan, const ChildOutputs& outputs, std::string& why) {
+// when it cannot be read) null, and why in `why`. Parsed already where
+// `early` parsed these bytes while the child rendered.
+json read_units(const LabPlan& plan, const ChildOutputs& outputs, EarlyUnits* early,
+                std::string& why) {
     json units;
     if (plan.units.empty()) return units;
     std::string bytes;
     if (outputs.read("units.json", 16 * kMiB, bytes, why)) {
-        units = json::parse(bytes, nullptr, /*allow_exceptions=*/false);
+        std::optional<json> parsed = early ? early->take(bytes) : std::nullopt;
+        units =
+            parsed ? std::move(*parsed) : json::parse(bytes, nullptr, /*allow_exceptions=*/false);
         if (!units.is_object()) why = "units.json is not a JSON object";
     }
     return units;
@@ -286,12 +290,12 @@ void judge_checkpoint(LabInputs& in, size_t k, const RenderPlan* render, bool re
 
 std::vector<CheckResult> judge_lab(const LabData& lab, const LabPlan& plan,
                                    const ChildOutputs& outputs, const std::string& out_dir,
-                                   int threads, LabTime* time) {
+                                   int threads, LabTime* time, EarlyUnits* early) {
     std::map<std::string, const RenderPlan*> renders;
     for (const RenderPlan& r : plan.renders) renders[r.checkpoint] = &r;
     LabInputs in{lab, plan, outputs, out_dir, json(), "", ReferenceImages(lab)};
     const Clock::time_point start = Clock::now();
-    in.units = read_units(plan, outputs, in.units_why);
+    in.units = read_units(plan, outputs, early, in.units_why);
     const double read_seconds = since(start);
     // Each checkpoint's frame is decoded, compared and encoded for the
     // report on its own: the checkpoints go to `threads` threads.

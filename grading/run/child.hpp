@@ -79,9 +79,13 @@ struct LabMarks {
 // anything that is not a record stops the child (the reason in `why`). A
 // record cut short by the child's end is dropped, like a file never written.
 constexpr int kOutputFd = 3;
+// Told of each record as soon as it is complete, on the watching thread:
+// its PATH and its bytes (a copy is the callee's to make).
+using RecordDone = std::function<void(const std::string& path, const std::string& bytes)>;
 class StreamedOutputs {
 public:
-    explicit StreamedOutputs(std::string dir) : dir_(std::move(dir)) {}
+    explicit StreamedOutputs(std::string dir, RecordDone done = {})
+        : dir_(std::move(dir)), done_(std::move(done)) {}
     // Reads until the pipe is empty (`all`) or for at most 16 MiB; false
     // with `why` when the child must be stopped, and then never reads again.
     bool read(int fd, const ChildLimits& limits, bool all, std::string& why);
@@ -97,7 +101,9 @@ public:
 private:
     bool fill(int fd, const ChildLimits& limits, bool all, std::string& why);
     bool header(const ChildLimits& limits, std::string& why);
+    void completed();
     std::string dir_;
+    RecordDone done_;
     std::map<std::string, std::string> files_;  // by PATH
     std::string pending_;                       // read, not yet a header or body
     std::string* body_ = nullptr;               // the record being filled
@@ -176,9 +182,11 @@ std::set<std::string> mesa_cache_keys(const std::string& dir);
 // differ serves nothing. False for a shared cache, or one without Mesa's
 // (no `mesa_keys`).
 bool seed_key_missed(const ShaderCache& cache, const std::string& work_dir);
+// `done`, when given, is told of each output record as it arrives
+// (StreamedOutputs), for work that need not wait for the lab's end.
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                        const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
-                       const ShaderCache& shader_cache = {});
+                       const ShaderCache& shader_cache = {}, const RecordDone& done = {});
 
 // Several labs in one child, in turn (`lab grade-child` with a --job and
 // --out for each), each in a subdirectory of one work directory, for the
@@ -190,11 +198,12 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
 // child while the child goes on with the next), on the calling thread or the
 // one watching the child; when the child fails after its last lab, each lab
 // is graded again alone and `ready` gets it a second time, to replace the
-// first.
+// first. `done` as run_lab_child's.
 using LabReady = std::function<void(size_t, LabChild&&)>;
 void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann::json>& jobs,
                       const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
-                      const ShaderCache& shader_cache, const LabReady& ready);
+                      const ShaderCache& shader_cache, const LabReady& ready,
+                      const RecordDone& done = {});
 
 // Bytes in regular files under `dir`, not following links.
 std::uint64_t directory_bytes(const std::string& dir);

@@ -92,7 +92,7 @@ bool seed_key_missed(const ShaderCache& cache, const std::string& work_dir) {
 
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                        const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
-                       const ShaderCache& shader_cache) {
+                       const ShaderCache& shader_cache, const RecordDone& done) {
     LabChild child;
     child.dir = std::make_shared<WorkDir>(user);
     const std::string dir = child.dir->path();
@@ -104,7 +104,7 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
         lab_binary, "grade-child", "--job",       job_path,
         "--out",    dir,           "--output-fd", std::to_string(kOutputFd)};
     if (!backend.empty()) argv.insert(argv.end(), {"--backend", backend});
-    StreamedOutputs streamed(dir);
+    StreamedOutputs streamed(dir, done);
     child.run = run_child(argv, dir, limits, user, env, nullptr, &streamed);
     read_back(child, dir, limits, streamed);
     child.cache_missed = seed_key_missed(shader_cache, dir);
@@ -113,9 +113,10 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
 
 void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann::json>& jobs,
                       const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
-                      const ShaderCache& shader_cache, const LabReady& ready) {
+                      const ShaderCache& shader_cache, const LabReady& ready,
+                      const RecordDone& done) {
     auto alone = [&](size_t i) {
-        ready(i, run_lab_child(lab_binary, jobs[i], backend, limits, user, shader_cache));
+        ready(i, run_lab_child(lab_binary, jobs[i], backend, limits, user, shader_cache, done));
     };
     if (jobs.size() == 1) alone(0);
     if (jobs.size() <= 1) return;
@@ -127,7 +128,7 @@ void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann:
     for (const nlohmann::json& job : jobs) labs.push_back(job.value("lab", "?"));
     const std::vector<std::string> env = shader_cache_env(shader_cache, dir->path());
     dir->hand_over();
-    StreamedOutputs streamed(dir->path());
+    StreamedOutputs streamed(dir->path(), done);
     // A lab that ended in the child, with `tail` added to its log.
     auto ended_lab = [&](size_t i, const std::string& tail) {
         LabChild child;
@@ -162,8 +163,9 @@ void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann:
     // The lab that broke the child, alone; then the rest, in one child again.
     alone(ended);
     const std::vector<nlohmann::json> rest(jobs.begin() + static_cast<long>(ended) + 1, jobs.end());
-    run_lab_children(lab_binary, rest, backend, limits, user, shader_cache,
-                     [&](size_t i, LabChild&& c) { ready(ended + 1 + i, std::move(c)); });
+    run_lab_children(
+        lab_binary, rest, backend, limits, user, shader_cache,
+        [&](size_t i, LabChild&& c) { ready(ended + 1 + i, std::move(c)); }, done);
 }
 
 }  // namespace grading

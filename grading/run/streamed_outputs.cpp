@@ -65,8 +65,13 @@ bool StreamedOutputs::header(const ChildLimits& limits, std::string& why) {
     got_ = std::min(pending_.size(), body_->size());
     std::memcpy(body_->data(), pending_.data(), got_);
     pending_.erase(0, got_);
-    if (got_ == body_->size()) body_ = nullptr;  // complete already
+    if (got_ == body_->size()) completed();  // complete already
     return true;
+}
+
+void StreamedOutputs::completed() {
+    if (done_) done_(body_path_, *body_);
+    body_ = nullptr;
 }
 
 bool StreamedOutputs::read(int fd, const ChildLimits& limits, bool all, std::string& why) {
@@ -110,7 +115,7 @@ bool StreamedOutputs::fill(int fd, const ChildLimits& limits, bool all, std::str
         if (!body_) {
             pending_.append(chunk, static_cast<size_t>(n));
         } else if ((got_ += static_cast<size_t>(n)) == body_->size()) {
-            body_ = nullptr;  // a record complete
+            completed();
         }
     }
     return true;

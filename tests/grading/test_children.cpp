@@ -246,6 +246,23 @@ TEST_CASE("children: outputs sent on the output descriptor are taken apart, reco
     CHECK(streamed.lab_bytes() == 4 * 4096);  // the one cut short too
 }
 
+TEST_CASE("children: each record is told as it completes, once, and a record cut short never") {
+    const std::string dir = "/tmp/course-x";
+    std::vector<std::pair<std::string, std::string>> told;
+    grading::StreamedOutputs streamed(dir, [&](const std::string& path, const std::string& bytes) {
+        told.emplace_back(path, bytes);
+    });
+    // A body over three reads, one complete with its header, an empty one,
+    // and one cut short by the end.
+    const Fed fed = feed(streamed, {"OUTPUT 10 " + dir + "/0/units.json\n{\"u0\"", ":{}",
+                                    "}\nOUTPUT 2 " + dir + "/a.json\n[]OUTPUT 0 " + dir + "/e\n",
+                                    "OUTPUT 9 " + dir + "/cut.pam\nshort"});
+    REQUIRE_MESSAGE(fed.ok, fed.why);
+    const std::vector<std::pair<std::string, std::string>> want = {
+        {dir + "/0/units.json", "{\"u0\":{}}\n"}, {dir + "/a.json", "[]"}, {dir + "/e", ""}};
+    CHECK(told == want);
+}
+
 TEST_CASE(
     "children: anything on the output descriptor but a record of the work directory stops the "
     "child") {

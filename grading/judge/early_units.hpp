@@ -1,0 +1,42 @@
+// A lab's units.json parsed as soon as the child has sent it, while the
+// child goes on to draw the lab's frames: the child calls the unit
+// functions before it renders, and parsing thousands of results is most of
+// judging them. judge_lab takes the parse of exactly the bytes it reads,
+// and parses them itself where none was started, so the verdicts never
+// depend on whether the early parse ran.
+#pragma once
+
+#include <future>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grading {
+
+class EarlyUnits {
+public:
+    EarlyUnits() = default;
+    EarlyUnits(const EarlyUnits&) = delete;
+    EarlyUnits& operator=(const EarlyUnits&) = delete;
+    ~EarlyUnits();
+    // For StreamedOutputs (grading/run/child.hpp: RecordDone): a record named
+    // units.json starts its parse on a thread of its own.
+    void record_done(const std::string& path, const std::string& bytes);
+    // The parse of `bytes` (json::parse without exceptions, as judge_lab
+    // makes it), waited for and removed; nothing when none was started for
+    // these very bytes.
+    std::optional<nlohmann::json> take(const std::string& bytes);
+
+private:
+    struct Parse {
+        std::shared_ptr<const std::string> bytes;
+        std::future<nlohmann::json> json;
+    };
+    std::mutex mutex_;
+    std::vector<Parse> parses_;
+};
+
+}  // namespace grading
