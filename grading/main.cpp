@@ -71,8 +71,9 @@ Command add_grade(CLI::App& app, grading::GradeOptions& g) {
     grade->add_option("--out", g.out, "Report directory (default build/grade)");
     grade->add_option("--backend", g.backend, kBackendHelp);
     grade
-        ->add_option("--jobs", g.jobs,
-                     "Children grading labs in parallel, each every N-th lab in turn")
+        ->add_option(
+            "--jobs", g.jobs,
+            "Children grading labs in parallel, the costliest labs first, each to the least loaded")
         ->check(CLI::Range(1, 64));
     grade->add_option("--timeout", g.timeout_seconds, "Seconds per lab (default 60)")
         ->check(CLI::Range(1.0, 3600.0));
