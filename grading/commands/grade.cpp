@@ -221,7 +221,7 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
     std::vector<LabResult> results(labs.size());
     std::vector<char> ran(labs.size(), 0);  // the lab's child ran to its end
     // Each lab's unit results parsed as they come, while its frames are drawn.
-    EarlyUnits early;
+    EarlyUnits early(labs.size());
     using Ended = std::pair<size_t, LabChild>;
     Pipeline<Ended> judging([&](Ended& e) {
         results[e.first] =

@@ -4,8 +4,15 @@
 // judging them. judge_lab takes the parse of exactly the bytes it reads,
 // and parses them itself where none was started, so the verdicts never
 // depend on whether the early parse ran.
+//
+// What a child sends is not trusted: a record over kUnitsJsonMax is left
+// alone (judge_lab refuses it too), at most kKept parses are held at a
+// time (a record of a path already held replaces its parse), and at most
+// kStartsPerLab parses a lab are ever started, however many records a child
+// sends; past these, judge_lab parses what it reads, as it would anyway.
 #pragma once
 
+#include <cstddef>
 #include <future>
 #include <memory>
 #include <mutex>
@@ -16,9 +23,16 @@
 
 namespace grading {
 
+// The largest units.json course reads.
+constexpr size_t kUnitsJsonMax = 16 * 1024 * 1024;
+
 class EarlyUnits {
 public:
-    EarlyUnits() = default;
+    static constexpr size_t kKept = 2;
+    static constexpr size_t kStartsPerLab = 2;
+
+    // For the records of a child (or children) grading `labs` labs.
+    explicit EarlyUnits(size_t labs) : starts_left_(kStartsPerLab * labs) {}
     EarlyUnits(const EarlyUnits&) = delete;
     EarlyUnits& operator=(const EarlyUnits&) = delete;
     ~EarlyUnits();
@@ -32,11 +46,13 @@ public:
 
 private:
     struct Parse {
+        std::string path;
         std::shared_ptr<const std::string> bytes;
         std::future<nlohmann::json> json;
     };
     std::mutex mutex_;
     std::vector<Parse> parses_;
+    size_t starts_left_;
 };
 
 }  // namespace grading

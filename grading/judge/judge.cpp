@@ -133,7 +133,7 @@ json read_units(const LabPlan& plan, const ChildOutputs& outputs, EarlyUnits* ea
     json units;
     if (plan.units.empty()) return units;
     std::string bytes;
-    if (outputs.read("units.json", 16 * kMiB, bytes, why)) {
+    if (outputs.read("units.json", kUnitsJsonMax, bytes, why)) {
         std::optional<json> parsed = early ? early->take(bytes) : std::nullopt;
         units =
             parsed ? std::move(*parsed) : json::parse(bytes, nullptr, /*allow_exceptions=*/false);
