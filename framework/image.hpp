@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fw {
@@ -77,11 +78,13 @@ bool png_header_size(const std::string& bytes, int& width, int& height);
 // (image_pam.cpp), sizes 1..65536 and exactly the bytes they call for; it
 // throws fw::Error naming `name` and what is wrong.
 std::string encode_pam(const Image& img);
+// encode_pam's header alone: its pixels follow, the top row first.
+std::string pam_header(const Image& img);
 void write_pam(const std::string& path, const Image& img);
-Image decode_pam(const std::string& bytes, const std::string& name);
+Image decode_pam(std::string_view bytes, const std::string& name);
 // The width and height a PAM's header states, read without the pixels; false
 // when `bytes` does not start with such a header.
-bool pam_header_size(const std::string& bytes, int& width, int& height);
+bool pam_header_size(std::string_view bytes, int& width, int& height);
 
 // PFM, single channel ("Pf"), little-endian float32, rows bottom first:
 // header "Pf\n<width> <height>\n-1.0\n". read_pfm accepts either byte order

@@ -28,15 +28,15 @@ void check_encodable(const Image& img) {
                     " pixels");
 }
 
+}  // namespace
+
 std::string pam_header(const Image& img) {
+    check_encodable(img);
     return "P7\nWIDTH " + std::to_string(img.width) + "\nHEIGHT " + std::to_string(img.height) +
            "\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n";
 }
 
-}  // namespace
-
 std::string encode_pam(const Image& img) {
-    check_encodable(img);
     std::string bytes = pam_header(img);
     const size_t header = bytes.size(), row = static_cast<size_t>(img.width) * 4;
     bytes.resize(header + row * img.height);
@@ -60,7 +60,7 @@ namespace {
 
 // The header's sizes and where the pixels start; false with `why` when the
 // header is not exactly what encode_pam writes (fields in any order).
-bool parse_header(const std::string& bytes, int& width, int& height, size_t& pixels,
+bool parse_header(std::string_view bytes, int& width, int& height, size_t& pixels,
                   std::string& why) {
     if (bytes.compare(0, 3, "P7\n") != 0) {
         why = "not a PAM file (no 'P7' line)";
@@ -70,11 +70,11 @@ bool parse_header(const std::string& bytes, int& width, int& height, size_t& pix
     size_t pos = 3;
     for (;;) {
         const size_t end = bytes.find('\n', pos);
-        if (end == std::string::npos || end - pos > 64 || pos > 512) {
+        if (end == std::string_view::npos || end - pos > 64 || pos > 512) {
             why = "header without an ENDHDR line";
             return false;
         }
-        const std::string line = bytes.substr(pos, end - pos);
+        const std::string line(bytes.substr(pos, end - pos));
         pos = end + 1;
         if (line == "ENDHDR") break;
         const size_t space = line.find(' ');
@@ -115,13 +115,13 @@ bool parse_header(const std::string& bytes, int& width, int& height, size_t& pix
 
 }  // namespace
 
-bool pam_header_size(const std::string& bytes, int& width, int& height) {
+bool pam_header_size(std::string_view bytes, int& width, int& height) {
     size_t pixels = 0;
     std::string why;
     return parse_header(bytes, width, height, pixels, why);
 }
 
-Image decode_pam(const std::string& bytes, const std::string& name) {
+Image decode_pam(std::string_view bytes, const std::string& name) {
     int w = 0, h = 0;
     size_t pos = 0;
     std::string why;

@@ -1,9 +1,12 @@
 #include "framework/runner/grade_child.hpp"
 
 #include <fcntl.h>
+#include <limits.h>
 #include <malloc.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "framework/error.hpp"
 #include "framework/gl/shader.hpp"
@@ -35,15 +39,22 @@ using nlohmann::json;
 // for a frame. child.json is a file either way: its rename ends the lab.
 int output_fd = -1;
 
-void write_all(const char* data, size_t size, const std::string& path) {
-    while (size > 0) {
-        const ssize_t n = ::write(output_fd, data, size);
+// Writes `parts` in order, whatever share of them each writev takes.
+void write_all(std::vector<iovec> parts, const std::string& path) {
+    size_t first = 0;
+    while (first < parts.size()) {
+        const int count = static_cast<int>(std::min<size_t>(parts.size() - first, IOV_MAX));
+        const ssize_t n = ::writev(output_fd, &parts[first], count);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0)
             throw Error("cannot send '" + path + "' to course on descriptor " +
                         std::to_string(output_fd) + ": " + std::strerror(errno));
-        data += n;
-        size -= static_cast<size_t>(n);
+        size_t done = static_cast<size_t>(n);
+        while (first < parts.size() && done >= parts[first].iov_len) done -= parts[first++].iov_len;
+        if (done > 0) {
+            parts[first].iov_base = static_cast<char*>(parts[first].iov_base) + done;
+            parts[first].iov_len -= done;
+        }
     }
 }
 
@@ -60,11 +71,16 @@ double since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+std::string record_line(size_t size, const std::string& path) {
+    return "OUTPUT " + std::to_string(size) + " " + path + "\n";
+}
+
 void put_output(const std::string& path, const std::string& bytes) {
     if (output_fd >= 0) {
-        const std::string header = "OUTPUT " + std::to_string(bytes.size()) + " " + path + "\n";
-        write_all(header.data(), header.size(), path);
-        write_all(bytes.data(), bytes.size(), path);
+        const std::string line = record_line(bytes.size(), path);
+        write_all({{const_cast<char*>(line.data()), line.size()},
+                   {const_cast<char*>(bytes.data()), bytes.size()}},
+                  path);
         return;
     }
     std::ofstream out(path, std::ios::binary);
@@ -72,8 +88,21 @@ void put_output(const std::string& path, const std::string& bytes) {
         throw Error("cannot write '" + path + "'");
 }
 
+// A frame as encode_pam writes it. Sent, its rows go from the image to the
+// pipe as they are: no copy of the frame is made.
+void put_pam(const std::string& path, const Image& image) {
+    if (output_fd < 0) return put_output(path, encode_pam(image));
+    const std::string header = pam_header(image);
+    const size_t row = static_cast<size_t>(image.width) * sizeof(Rgba8);
+    const std::string head = record_line(header.size() + row * image.height, path) + header;
+    std::vector<iovec> parts = {{const_cast<char*>(head.data()), head.size()}};
+    for (int y = image.height - 1; y >= 0; --y)  // bottom-first storage, top row first
+        parts.push_back({const_cast<Rgba8*>(&image.at(0, y)), row});
+    write_all(std::move(parts), path);
+}
+
 void write_json(const std::string& path, const json& value) {
-    // Compact: course reads it, not a person, and units.json holds thousands of results.
+    // Compact: course reads it, not a person.
     put_output(path, value.dump() + "\n");
 }
 
@@ -123,7 +152,7 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     }
     renderer.read_back(params, width, height, 0.0, read, out);
     // Raw pixels: course judges them and encodes only what a report shows.
-    put_output(base + ".pam", encode_pam(out.color));
+    put_pam(base + ".pam", out.color);
     if (read.depth) put_output(base + ".pfm", encode_pfm(out.depth));
     if (read.buffers) put_output(base + ".buffers.json", buffers_json(out.buffers));
     write_json(base + ".stats.json", out.stats);
@@ -136,18 +165,24 @@ json call_unit(const RegisteredLab& lab, const json& call) {
     return {{"error", "lab '" + lab.info.id + "' has no unit function '" + name + "'"}};
 }
 
-// Every unit call of the job, by id: its result, or the error it threw.
-json call_units(const RegisteredLab& lab, const json& calls) {
-    json units = json::object();
+// units.json: every unit call of the job, by id, with its result or the
+// error it threw. Written call by call, not built as one object first (a
+// lab's thousands of cases made a large tree only to write it out); an id
+// given twice is written twice, and a JSON reader keeps the last, as the
+// object did.
+std::string units_text(const RegisteredLab& lab, const json& calls) {
+    std::string text = "{";
     for (const json& call : calls) {
-        std::string id = call.value("id", "");
+        json entry;
         try {
-            units[id] = call_unit(lab, call);
+            entry = call_unit(lab, call);
         } catch (const std::exception& e) {
-            units[id] = {{"error", e.what()}};
+            entry = {{"error", e.what()}};
         }
+        if (text.size() > 1) text += ',';
+        text += json(call.value("id", "")).dump() + ':' + entry.dump();
     }
-    return units;
+    return text + "}\n";
 }
 
 // The job's "shader_overrides" ({"NN_name/file.frag": "its text"}), in
@@ -265,7 +300,7 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     const ShaderOverrides overrides(job, job_path);
 
     // Unit calls first: they need no context, so a broken shader costs them nothing.
-    write_json(out_dir + "/units.json", call_units(lab, job.value("units", json::array())));
+    put_output(out_dir + "/units.json", units_text(lab, job.value("units", json::array())));
     seconds.units = since(start);
 
     const json renders = job.value("renders", json::array());

@@ -43,7 +43,7 @@ void EarlyUnits::record_done(const std::string& path, const std::string& bytes) 
     }
 }
 
-std::optional<nlohmann::json> EarlyUnits::take(const std::string& bytes) {
+std::optional<nlohmann::json> EarlyUnits::take(std::string_view bytes) {
     std::future<nlohmann::json> found;
     {
         const std::lock_guard<std::mutex> lock(mutex_);

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace grading {
@@ -42,7 +43,7 @@ public:
     // The parse of `bytes` (json::parse without exceptions, as judge_lab
     // makes it), waited for and removed; nothing when none was started for
     // these very bytes.
-    std::optional<nlohmann::json> take(const std::string& bytes);
+    std::optional<nlohmann::json> take(std::string_view bytes);
 
 private:
     struct Parse {

@@ -132,8 +132,9 @@ json read_units(const LabPlan& plan, const ChildOutputs& outputs, EarlyUnits* ea
                 std::string& why) {
     json units;
     if (plan.units.empty()) return units;
-    std::string bytes;
-    if (outputs.read("units.json", kUnitsJsonMax, bytes, why)) {
+    std::string storage;
+    std::string_view bytes;
+    if (outputs.read_view("units.json", kUnitsJsonMax, bytes, storage, why)) {
         std::optional<json> parsed = early ? early->take(bytes) : std::nullopt;
         units =
             parsed ? std::move(*parsed) : json::parse(bytes, nullptr, /*allow_exceptions=*/false);

@@ -12,7 +12,7 @@ namespace grading {
 namespace {
 
 // Shown when a file does not start like a PAM: its first bytes, escaped.
-std::string first_bytes(const std::string& bytes) {
+std::string first_bytes(std::string_view bytes) {
     std::string s;
     for (size_t i = 0; i < bytes.size() && i < 16; ++i) {
         unsigned char c = static_cast<unsigned char>(bytes[i]);
@@ -30,8 +30,9 @@ bool read_rendered(const ChildOutputs& outputs, const RenderPlan& render, fw::Im
     const std::string name = render.checkpoint + ".pam";
     // 4 bytes a pixel and a header of a few lines.
     const std::uint64_t limit = std::uint64_t(render.width) * render.height * 4 + 1024;
-    std::string bytes;
-    if (!outputs.read(name, limit, bytes, why)) return false;
+    std::string storage;
+    std::string_view bytes;  // the record the child sent, not a copy of it
+    if (!outputs.read_view(name, limit, bytes, storage, why)) return false;
     int w = 0, h = 0;
     if (!fw::pam_header_size(bytes, w, h)) {
         why = name + " is not a PAM file: it starts with " + first_bytes(bytes);

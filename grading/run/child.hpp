@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "grading/results/results.hpp"
@@ -134,6 +135,11 @@ public:
     // file, or over `limit` bytes ("output too large").
     bool read(const std::string& name, std::uint64_t limit, std::string& bytes,
               std::string& why) const;
+    // The same, without a copy of what the child sent: `bytes` views the
+    // sent record, or `storage` where the output is a file. Valid while this
+    // object and `storage` are.
+    bool read_view(const std::string& name, std::uint64_t limit, std::string_view& bytes,
+                   std::string& storage, std::string& why) const;
     // Why there is no `name` when the child did not write it.
     std::string missing_reason(const std::string& name) const;
     // Non-empty when the work directory as a whole is over its cap.
@@ -142,6 +148,9 @@ public:
     const LabStatus& status() const { return run_.status; }
 
 private:
+    // An output the child left as a file in its work directory.
+    bool read_file(const std::string& name, std::uint64_t limit, std::string& bytes,
+                   std::string& why) const;
     std::string dir_;
     ChildRun run_;
     std::map<std::string, std::string> streamed_;  // by name, as a file in dir_ would be

@@ -40,6 +40,14 @@ std::string ChildOutputs::missing_reason(const std::string& name) const {
 
 bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::string& bytes,
                         std::string& why) const {
+    std::string_view view;
+    if (!read_view(name, limit, view, bytes, why)) return false;
+    if (view.data() != bytes.data()) bytes.assign(view);
+    return true;
+}
+
+bool ChildOutputs::read_view(const std::string& name, std::uint64_t limit, std::string_view& bytes,
+                             std::string& storage, std::string& why) const {
     if (!too_large_.empty()) {
         why = too_large_;
         return false;
@@ -54,6 +62,13 @@ bool ChildOutputs::read(const std::string& name, std::uint64_t limit, std::strin
         bytes = sent->second;
         return true;
     }
+    if (!read_file(name, limit, storage, why)) return false;
+    bytes = storage;
+    return true;
+}
+
+bool ChildOutputs::read_file(const std::string& name, std::uint64_t limit, std::string& bytes,
+                             std::string& why) const {
     const std::string file = dir_ + "/" + name;
     struct stat st;
     if (lstat(file.c_str(), &st) != 0) {
