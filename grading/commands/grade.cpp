@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -21,6 +22,7 @@
 #include "framework/error.hpp"
 #include "framework/text.hpp"
 #include "grading/commands/commands.hpp"
+#include "grading/commands/grade_setup.hpp"
 #include "grading/commands/lab_shares.hpp"
 #include "grading/commands/lab_sources.hpp"
 #include "grading/diagnosis/file_isolation.hpp"
@@ -214,7 +216,8 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
     for (const LabData* lab : labs) {
         const auto start = std::chrono::steady_clock::now();
         plans.push_back(plan_lab(*lab, setup.seed, PlanFor::Grading));
-        jobs.push_back(plans.back().job);
+        // Moved, not copied: a unit-heavy lab's job holds thousands of cases.
+        jobs.push_back(std::move(plans.back().job));
         plan_seconds.push_back(
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
@@ -247,7 +250,7 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
         const auto passes = [&](const std::string& checkpoint, const ChildOutputs& outputs) {
             return frame_checks_pass(*labs[i], plans[i], checkpoint, outputs);
         };
-        isolate_shader_mistakes(*labs[i], plans[i].job, passes, results[i].checks, spawn);
+        isolate_shader_mistakes(*labs[i], jobs[i], passes, results[i].checks, spawn);
     }
     return results;
 }
@@ -263,18 +266,6 @@ public:
 private:
     std::atomic<int>& count_;
 };
-
-// The named labs of `all`, their checks parsed and their reference records
-// checked (a usage error names what is wrong before any child runs).
-std::vector<LabData> labs_to_grade(const std::vector<LabData>& all,
-                                   const std::vector<std::string>& names) {
-    std::vector<LabData> labs = select_labs(all, names);
-    for (LabData& lab : labs) {
-        parse_checks(lab);
-        check_reference_records(lab);
-    }
-    return labs;
-}
 
 // --not-built FILE: a JSON object from a lab's folder to what the compiler
 // said of its C++ (`course autograde`); none without the option.
@@ -344,6 +335,7 @@ void grade_in_children(const std::vector<LabData>& labs, const std::vector<size_
 
 int grade_command(const GradeOptions& options) {
     const RunClock timing;
+    std::future<SandboxProbe> sandbox_probe = std::async(std::launch::async, probe_sandbox);
     const std::vector<LabData> all = discover_labs(source_root());
     std::vector<LabData> labs = labs_to_grade(all, options.labs);
     ChildSetup setup;
@@ -366,13 +358,12 @@ int grade_command(const GradeOptions& options) {
     run.backend = backend_name(options);
     run.seed = seed.value;
     run.seed_from = seed.from;
-    // The privileged layers, where this machine allows them (isolation.hpp).
-    std::string namespaces_why, cgroups_why;
-    setup.limits.namespaces = namespaces_usable(namespaces_why);
-    const std::unique_ptr<CgroupRoot> cgroups = CgroupRoot::open(cgroups_why);
-    setup.limits.cgroups = cgroups.get();
+    const SandboxProbe sandbox = sandbox_probe.get();
+    setup.limits.namespaces = sandbox.namespaces;
+    setup.limits.cgroups = sandbox.cgroups.get();
     setup.limits.resident_cap = static_cast<std::uint64_t>(options.memory_mib) * kMiB;
-    run.sandbox = sandbox_layers(setup.user, setup.limits, namespaces_why, cgroups_why);
+    run.sandbox =
+        sandbox_layers(setup.user, setup.limits, sandbox.namespaces_why, sandbox.cgroups_why);
     if (options.sandbox == GradeOptions::Sandbox::Strict) require_every_layer(run.sandbox);
 
     run.labs.resize(labs.size());

@@ -18,19 +18,24 @@
 namespace grading {
 
 // Calls `fn(i)` for every i below `count` on up to `threads` threads (the
-// calling one among them), each taking the next i in order; rethrows the
-// first exception once all are done.
+// calling one among them), each taking the next i in order; once all are
+// done, rethrows the exception of the lowest i that threw: the same one on
+// every run, whichever thread failed first.
 inline void parallel_for(size_t count, int threads, const std::function<void(size_t)>& fn) {
     std::atomic<size_t> next{0};
     std::mutex failure_mutex;
     std::exception_ptr failure;
+    size_t failed_at = count;
     auto worker = [&] {
         for (size_t i; (i = next++) < count;) {
             try {
                 fn(i);
             } catch (...) {
                 std::lock_guard<std::mutex> lock(failure_mutex);
-                if (!failure) failure = std::current_exception();
+                if (i < failed_at) {
+                    failure = std::current_exception();
+                    failed_at = i;
+                }
             }
         }
     };

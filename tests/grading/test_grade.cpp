@@ -434,6 +434,47 @@ TEST_CASE(
     }
 }
 
+TEST_CASE(
+    "course grade: of several labs with a broken file, the first lab's is told on every run") {
+    // The labs' files are read in parallel; the hostile lab's, smaller, is
+    // read first, but the error told is the one of the first lab in order.
+    const std::string tree = make_tree(fw::test::out_dir() + "/tree", true);
+    for (const auto& e : fs::directory_iterator(tree + "/labs/00_pipeline/reference"))
+        if (e.path().string().find(".record.json") != std::string::npos)
+            write_file(e.path().string(), "<<<<<<< HEAD\n");
+    write_file(tree + "/labs/01_hostile/reference/frame.record.json", "<<<<<<< HEAD\n");
+    for (int run = 0; run < 4; ++run) {
+        CAPTURE(run);
+        Graded g = grade("LAB_ROOT=" + tree, "--lab " + fake_lab() + " pipeline hostile",
+                         fw::test::out_dir() + "/report");
+        CHECK(g.exit_code == 2);
+        fw::test::check_mentions(g.output,
+                                 {"labs/00_pipeline/reference/", "course bless pipeline"});
+        CHECK(g.output.find("01_hostile") == std::string::npos);
+    }
+}
+
+TEST_CASE("lab grade-child: units.json holds each call's result or error, the last of an id kept") {
+    const std::string dir = fw::test::out_dir() + "/units_child";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    write_file(dir + "/JOB.json", R"({"lab": "transforms", "renders": [], "units": [
+        {"id": "a", "function": "nosuch", "args": []},
+        {"id": "b", "function": "translate", "args": [[1, 2, 3]]},
+        {"id": "c", "function": "translate", "args": ["three numbers"]},
+        {"id": "a", "function": "nosuch_either", "args": []}]})");
+    const fw::test::CommandResult r = fw::test::run_command(
+        fw::test::bin_dir() + "/lab grade-child --job " + dir + "/JOB.json --out " + dir);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::ifstream in(dir + "/units.json");
+    const nlohmann::json units = nlohmann::json::parse(in);
+    CHECK(units.size() == 3);
+    CHECK(units["a"]["error"].get<std::string>().find("nosuch_either") != std::string::npos);
+    REQUIRE(units["b"].contains("result"));
+    CHECK(units["b"]["result"].dump().find('3') != std::string::npos);
+    CHECK(units["c"].contains("error"));
+}
+
 TEST_CASE("course grade: a unit check fails when the child returns wrong results") {
     const json checks = lab0_checks();
     double unit_points = 0;
