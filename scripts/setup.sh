@@ -61,7 +61,15 @@ fi
 if [ -d "$root/tests" ]; then
   case $preset in default | ci | egl-only | asan) packages+=(ccache) ;; esac
 fi
-if [ "$preset" = container ]; then packages+=(ccache); fi
+if [ "$preset" = container ]; then
+  packages+=(ccache)
+  # ccache keys an object by the variables that change the compiler's
+  # messages too (LANG, LC_ALL, LC_CTYPE, LC_MESSAGES, GCC_COLORS), so a
+  # mounted tree built with the caller's (a shell's LANG passed in, a
+  # -e LANG) would miss every object of the image's build, made with none.
+  # Neither build has them, whatever the caller passes in.
+  unset LANG LC_ALL LC_CTYPE LC_MESSAGES GCC_COLORS
+fi
 
 missing=()
 for p in "${packages[@]}"; do
