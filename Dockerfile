@@ -17,8 +17,9 @@
 # mount hides the image's own build-container/, but the mounted tree sits at
 # the same path, so its first build takes every unchanged file's object from
 # the cache: the first frame comes within a minute of `docker run`, not after
-# a build of everything. The same image runs `course grade-class --shard`
-# (docs/cluster/).
+# a build of everything. setup.sh builds both without the caller's locale
+# (ccache keys objects by it: docs/performance.md, The container's first
+# build). The same image runs `course grade-class --shard` (docs/cluster/).
 FROM debian:bookworm
 
 COPY . /labs
