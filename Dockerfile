@@ -2,8 +2,8 @@
 # OpenGL 4.3 window (macOS, Windows, Codespaces). Mesa's llvmpipe renders
 # offscreen inside the container and `lab serve` shows the lab on a page.
 # The steps are the project's own set-up script, the same one the README's
-# two commands run on a fresh Debian machine. README.md, "On macOS, Windows
-# or in Codespaces":
+# two commands run on a fresh Debian machine. As docs/running.md runs it (macOS,
+# Windows or Codespaces):
 #
 #   docker build -t gl-labs .
 #   docker run --rm -it -p 127.0.0.1:8080:8080 -v "$PWD:/labs" -e LAB=pipeline gl-labs
