@@ -9,12 +9,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -152,6 +154,14 @@ struct ChildStart {
     child_fail("exec of the lab executable");
 }
 
+// The wall clock, as the kernel stamps a file's times with it (its coarse
+// clock), in seconds.
+double wall_seconds() {
+    timespec now{};
+    clock_gettime(CLOCK_REALTIME_COARSE, &now);
+    return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
+
 // The parent's side of a running child: keeps the tail of its output, and
 // kills its whole process group, saying why, when it breaks a limit.
 class ChildWatch {
@@ -166,7 +176,9 @@ public:
           limits_(c.limits),
           start_(start),
           marks_(marks),
-          streamed_(streamed) {}
+          streamed_(streamed) {
+        start_wall_ = last_end_wall_ = wall_seconds() - elapsed();  // a mark's clock at `start`
+    }
 
     // Until the child has exited and its pipe is drained (or held open past
     // the drain time by something it left behind).
@@ -241,7 +253,10 @@ private:
 
     // A lab whose mark is there has ended, all it printed and sent in the
     // pipes (written before the mark): that is its log and its outputs, and
-    // the next lab's limits count from here.
+    // the next lab's limits count from here. Its seconds end at the mark's
+    // time, not at this look: under load two labs can end between two
+    // looks, and the second would read 0 s. A time outside the child's run
+    // so far (a mark's time can be set) is taken as the nearest within it.
     void note_ended_labs() {
         struct stat st;
         while (marks_->ended.size() < marks_->files.size() &&
@@ -249,8 +264,12 @@ private:
             read_output();
             read_streamed(true);
             const double now = elapsed();
+            const double mark = static_cast<double>(st.st_mtim.tv_sec) +
+                                static_cast<double>(st.st_mtim.tv_nsec) * 1e-9;
+            const double end = std::clamp(mark, last_end_wall_, start_wall_ + now);
             keep_tail(run_.log);
-            marks_->ended.push_back({now - lab_start_, std::move(run_.log)});
+            marks_->ended.push_back({end - last_end_wall_, std::move(run_.log)});
+            last_end_wall_ = end;
             run_.log.clear();
             written_ = 0;
             lab_start_ = now;
@@ -284,8 +303,9 @@ private:
     Clock::time_point start_;
     LabMarks* marks_;
     StreamedOutputs* streamed_;
-    double lab_start_ = 0.0;      // when the lab now running began (marks_)
-    std::uint64_t dir_base_ = 0;  // the work directory's bytes then
+    double lab_start_ = 0.0;                         // when the lab now running began (marks_)
+    double start_wall_ = 0.0, last_end_wall_ = 0.0;  // the wall clock at the start, the last mark
+    std::uint64_t dir_base_ = 0;                     // the work directory's bytes then
     ChildRun run_;
     std::uint64_t written_ = 0;
     bool killed_ = false, exited_ = false, eof_ = false;

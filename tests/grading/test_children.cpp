@@ -312,3 +312,39 @@ TEST_CASE("children: a child's descriptor 3 is the output pipe, and what it send
     CHECK(got["big.pam"] == std::string(1 << 20, '\0'));
     CHECK(got["s.json"] == "{}");
 }
+
+TEST_CASE("children: a lab's seconds end at its mark's time, not when course looks for it") {
+    // Under load course can look for the marks after two labs have ended;
+    // the labs' seconds are still each lab's own. Here the marks' times
+    // say so: lab 0 ended 0.4 s before lab 1, though both marks appear at
+    // once, 0.6 s after the child's start. A mark whose time lies outside
+    // the child's run (set by the child: before its start, or in 2100)
+    // counts as the nearest time within it.
+    const std::string dir = work_dir() + "/marks";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    grading::LabMarks marks;
+    for (int i = 0; i < 4; ++i) marks.files.push_back(dir + "/m" + std::to_string(i));
+    const std::string script =
+        "sleep 0.6; t=$(date +%s.%N); "
+        "touch -d \"@$(awk -v t=\"$t\" 'BEGIN { printf \"%.6f\", t - 0.4 }')\" m0.tmp; "
+        "touch m1.tmp; touch -d @0 m2.tmp; touch -d @4102444800 m3.tmp; "
+        "mv m0.tmp m0; mv m1.tmp m1; mv m2.tmp m2; mv m3.tmp m3";
+    grading::ChildLimits limits;
+    limits.timeout_seconds = 20;
+    const grading::ChildRun run =
+        grading::run_child({"/bin/sh", "-c", script}, dir, limits, nullptr, {}, &marks);
+    const std::string how = run.status.text() + "\n" + run.log;
+    REQUIRE_MESSAGE(run.ok(), how);
+    REQUIRE(marks.ended.size() == 4);
+    const double s0 = marks.ended[0].seconds, s1 = marks.ended[1].seconds;
+    // Lab 1's mark was stamped 0.4 s after lab 0's, and a little more on a
+    // busy machine; lab 0 ended 0.4 s before the child ended, at least.
+    CHECK_MESSAGE((s0 > 0.12 && s0 < run.seconds - 0.35), "lab 0: " << s0 << " s");
+    CHECK_MESSAGE((s1 > 0.35 && s1 < 1.5), "lab 1: " << s1 << " s");
+    CHECK(marks.ended[2].seconds == 0.0);
+    CHECK(marks.ended[3].seconds >= 0.0);
+    double sum = 0.0;
+    for (const grading::LabMarks::Ended& e : marks.ended) sum += e.seconds;
+    CHECK_MESSAGE(sum <= run.seconds + 0.01, sum << " s of labs in a child of " << run.seconds);
+}
