@@ -158,29 +158,39 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     write_json(base + ".stats.json", out.stats);
 }
 
-json call_unit(const RegisteredLab& lab, const json& call) {
-    std::string name = call.value("function", "");
+// The lab's unit function `name`; null when it has none.
+const UnitFunction* find_unit(const RegisteredLab& lab, const std::string& name) {
     for (const UnitFunction& f : lab.info.functions)
-        if (f.name == name) return {{"result", f.call(call.value("args", json::array()))}};
-    return {{"error", "lab '" + lab.info.id + "' has no unit function '" + name + "'"}};
+        if (f.name == name) return &f;
+    return nullptr;
 }
 
 // units.json: every unit call of the job, by id, with its result or the
-// error it threw. Written call by call, not built as one object first (a
-// lab's thousands of cases made a large tree only to write it out); an id
-// given twice is written twice, and a JSON reader keeps the last, as the
-// object did.
-std::string units_text(const RegisteredLab& lab, const json& calls) {
+// error it threw. The job gives the calls of one function together
+// ({"function", "first", "args": [...]}: call k's id is "u" and first + k),
+// so that a lab's thousands of cases cost the job an argument list each;
+// the results are written call by call, not built as one object first. An
+// id given twice is written twice, and a JSON reader keeps the last.
+std::string units_text(const RegisteredLab& lab, const json& groups) {
     std::string text = "{";
-    for (const json& call : calls) {
-        json entry;
-        try {
-            entry = call_unit(lab, call);
-        } catch (const std::exception& e) {
-            entry = {{"error", e.what()}};
+    for (const json& group : groups) {
+        const std::string name = group.value("function", "");
+        const UnitFunction* f = find_unit(lab, name);
+        const long first = group.value("first", 0L);
+        const auto args = group.find("args");
+        if (args == group.end() || !args->is_array()) continue;
+        for (size_t k = 0; k < args->size(); ++k) {
+            if (text.size() > 1) text += ',';
+            text += "\"u" + std::to_string(first + static_cast<long>(k)) + "\":";
+            try {
+                if (!f)
+                    throw Error("lab '" + lab.info.id + "' has no unit function '" + name + "'");
+                text += "{\"result\":" + f->call((*args)[k]).dump() + "}";
+            } catch (const std::exception& e) {
+                text += "{\"error\":" +
+                        json(e.what()).dump(-1, ' ', false, json::error_handler_t::replace) + "}";
+            }
         }
-        if (text.size() > 1) text += ',';
-        text += json(call.value("id", "")).dump() + ':' + entry.dump();
     }
     return text + "}\n";
 }
@@ -300,7 +310,9 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     const ShaderOverrides overrides(job, job_path);
 
     // Unit calls first: they need no context, so a broken shader costs them nothing.
-    put_output(out_dir + "/units.json", units_text(lab, job.value("units", json::array())));
+    const auto units = job.find("units");  // not copied: a lab's thousands of cases
+    put_output(out_dir + "/units.json",
+               units_text(lab, units != job.end() ? *units : json::array()));
     seconds.units = since(start);
 
     const json renders = job.value("renders", json::array());

@@ -7,7 +7,8 @@
 //   {"lab": "transforms",
 //    "renders": [{"name": "trs_default", "params": {"angle": 30}, "width": 512, "height": 512,
 //                 "depth": false, "buffers": false, "usage": false}],
-//    "units":   [{"id": "u0", "function": "translate", "args": [[1, 2, 3]]}],
+//    "units":   [{"function": "translate", "first": 0, "args": [[[1, 2, 3]], [[0, 0, 1]]]}],
+//                 (the calls of one function: call k has args[k] and the id u<first + k>)
 //    "shader_overrides": {"01_transforms/transforms.vert": "#version 430 ..."}}
 //   ("shader_overrides", optional: texts compiled in place of those files of
 //   the shader directory for this job, fw::set_shader_overrides)
@@ -19,7 +20,7 @@
 //                                         (Lab::buffers, framework/lab_buffers.hpp)
 //   NAME.usage.json                       per render whose entry has "usage": true, also
 //                                         for one that failed (framework/trace/usage.hpp)
-//   units.json                            {"u0": {"result": ...} | {"error": "..."}}
+//   units.json                            {"u0": {"result": ...} | {"error": "..."}, "u1": ...}
 //   child.json                            written last: {"complete": true, "context": {...}}
 //
 // With --output-fd N every output but child.json is a record on descriptor N

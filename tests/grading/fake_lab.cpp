@@ -325,8 +325,12 @@ int misbehave(const std::string& mode, const json& job, const std::string& out,
                                                  .dump());
         }
         json claims = json::object();
-        for (const json& u : units)
-            claims[u.value("id", "")] = {{"result", "perfect"}, {"passed", true}};
+        for (const json& u : units) {  // the calls of one function: ids u<first>, ...
+            const long first = u.value("first", 0L);
+            for (size_t k = 0; k < u.value("args", json::array()).size(); ++k)
+                claims["u" + std::to_string(first + static_cast<long>(k))] = {{"result", "perfect"},
+                                                                              {"passed", true}};
+        }
         write_text(out + "/units.json", claims.dump());
         write_text(out + "/child.json",
                    json{{"complete", true}, {"all_checks_passed", true}}.dump());

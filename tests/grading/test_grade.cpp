@@ -458,23 +458,23 @@ TEST_CASE("lab grade-child: units.json holds each call's result or error, the la
     const std::string dir = fw::test::out_dir() + "/units_child";
     fs::remove_all(dir);
     fs::create_directories(dir);
+    // The calls of one function together: call k of an entry is u<first + k>.
     write_file(dir + "/JOB.json", R"({"lab": "transforms", "renders": [], "units": [
-        {"id": "a", "function": "nosuch", "args": []},
-        {"id": "b", "function": "translate", "args": [[1, 2, 3]]},
-        {"id": "c", "function": "translate", "args": ["three numbers"]},
-        {"id": "a", "function": "nosuch_either", "args": []}]})");
+        {"function": "nosuch", "first": 0, "args": [[]]},
+        {"function": "translate", "first": 1, "args": [[[1, 2, 3]], ["three numbers"]]},
+        {"function": "nosuch_either", "first": 0, "args": [[]]}]})");
     const fw::test::CommandResult r = fw::test::run_command(
         fw::test::bin_dir() + "/lab grade-child --job " + dir + "/JOB.json --out " + dir);
     REQUIRE_MESSAGE(r.exit_code == 0, r.output);
     std::ifstream in(dir + "/units.json");
     const nlohmann::json units = nlohmann::json::parse(in);
     CHECK(units.size() == 3);
-    CHECK(units["a"]["error"].get<std::string>().find("nosuch_either") != std::string::npos);
+    CHECK(units["u0"]["error"].get<std::string>().find("nosuch_either") != std::string::npos);
     // translate(1, 2, 3), GLM's columns: the translation is the last one.
-    CHECK(units["b"]["result"] ==
+    CHECK(units["u1"]["result"] ==
           nlohmann::json::parse("[[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0],"
                                 " [0.0, 0.0, 1.0, 0.0], [1.0, 2.0, 3.0, 1.0]]"));
-    CHECK(units["c"]["error"].get<std::string>().find("3 numbers") != std::string::npos);
+    CHECK(units["u2"]["error"].get<std::string>().find("3 numbers") != std::string::npos);
 }
 
 TEST_CASE("course grade: a unit check fails when the child returns wrong results") {
