@@ -210,17 +210,19 @@ LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& c
 // the child goes on with the next.
 std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const ChildSetup& setup,
                                   const std::function<int()>& threads) {
-    std::vector<LabPlan> plans;
-    std::vector<nlohmann::json> jobs;
-    std::vector<double> plan_seconds;
-    for (const LabData* lab : labs) {
+    std::vector<LabPlan> plans(labs.size());
+    std::vector<nlohmann::json> jobs(labs.size());
+    std::vector<double> plan_seconds(labs.size());
+    // Side by side: the child starts when every job is written. Each plan
+    // depends on its lab and the seed alone.
+    parallel_for(labs.size(), threads(), [&](size_t i) {
         const auto start = std::chrono::steady_clock::now();
-        plans.push_back(plan_lab(*lab, setup.seed, PlanFor::Grading));
+        plans[i] = plan_lab(*labs[i], setup.seed, PlanFor::Grading);
         // Moved, not copied: a unit-heavy lab's job holds thousands of cases.
-        jobs.push_back(std::move(plans.back().job));
-        plan_seconds.push_back(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
+        jobs[i] = std::move(plans[i].job);
+        plan_seconds[i] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    });
     std::vector<LabResult> results(labs.size());
     std::vector<char> ran(labs.size(), 0);  // the lab's child ran to its end
     // Each lab's unit results parsed as they come, while its frames are drawn.
