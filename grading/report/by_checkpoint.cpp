@@ -171,9 +171,10 @@ std::vector<Thumbnails::Picture> Thumbnails::for_checkpoint(const CheckpointResu
     return pictures;
 }
 
-std::string within_limit(size_t limit, const std::function<std::string(size_t)>& write) {
+std::string within_limit(size_t limit, const std::function<std::string(size_t)>& write,
+                         const std::function<bool()>& left_out) {
     std::string text = write(0);
-    if (text.size() >= limit) return text;
+    if (text.size() >= limit || !left_out()) return text;
     size_t budget = limit - text.size();
     // Pictures never take more than the budget, but each checkpoint's table
     // around them is a little longer than the line saying they were left out:
