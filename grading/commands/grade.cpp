@@ -32,6 +32,7 @@
 #include "grading/platforms/autograder.hpp"
 #include "grading/platforms/compile_units.hpp"
 #include "grading/release/release.hpp"
+#include "grading/report/report_text.hpp"
 #include "grading/report/reports.hpp"
 #include "grading/run/parallel.hpp"
 #include "grading/sandbox/isolation.hpp"
@@ -188,6 +189,7 @@ LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& c
     result.log = child.run.log;
     result.seconds = child.run.seconds;
     result.checks = judge_lab(lab, plan, *child.outputs, out, threads, &result.time, &early);
+    report::read_page_images(result, out);
     child_seconds(*child.outputs, result.time);
     result.hidden_left_out = lab.file.hidden_checkpoints;
     result.hidden_points_left_out = lab.file.hidden_points;

@@ -78,20 +78,29 @@ pre.note { background: none; padding: 0; color: #555; }
            text-align: center; word-break: break-all; }
 )";
 
-// The PNG file at `path` as a data: URI; empty, with `why` set, when it
-// cannot be read or is not a PNG.
-std::string png_data_uri(const std::string& path, std::string& why) {
+// The PNG file at `path` for the page: its data: URI and shape, or why not.
+PageImage page_image(const std::string& path) {
+    PageImage image;
     std::ifstream file(path, std::ios::binary);
     if (!file) {
-        why = std::strerror(errno);
-        return {};
+        image.why = std::strerror(errno);
+        return image;
     }
-    const std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    std::ostringstream read;
+    read << file.rdbuf();
+    const std::string bytes = read.str();
     if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) {
-        why = "not a PNG file";
-        return {};
+        image.why = "not a PNG file";
+        return image;
     }
-    return "data:image/png;base64," + base64(bytes);
+    image.uri = "data:image/png;base64," + base64(bytes);
+    std::string head = bytes.substr(0, 24);
+    head.resize(24, '\0');
+    int w = 0, h = 0;
+    image.aspect = fw::png_header_size(head, w, h) && w > 0 && h > 0
+                       ? std::to_string(w) + " / " + std::to_string(h)
+                       : "1 / 1";
+    return image;
 }
 
 // Each image file is embedded once, as the background of a CSS class in the
@@ -101,6 +110,8 @@ std::string png_data_uri(const std::string& path, std::string& why) {
 class ImageTable {
 public:
     explicit ImageTable(const std::string& out_dir) : out_dir_(out_dir) {}
+    // The pictures read ahead for the lab whose figures come next (or none).
+    void read_ahead(const std::map<std::string, PageImage>* images) { ahead_ = images; }
 
     // The figure for `relative` (under out_dir), or a note saying why there
     // is none (`none`, else "no CAPTION image").
@@ -130,28 +141,29 @@ private:
     const Entry& entry(const std::string& relative) {
         auto found = entries_.find(relative);
         if (found != entries_.end()) return found->second;
+        PageImage own;
+        const PageImage* made = nullptr;
+        if (ahead_) {
+            const auto ahead = ahead_->find(relative);
+            if (ahead != ahead_->end()) made = &ahead->second;
+        }
+        if (!made) {
+            own = page_image(in_dir(out_dir_, relative));
+            made = &own;
+        }
         Entry e;
-        const std::string uri = png_data_uri(in_dir(out_dir_, relative), e.why);
-        if (!uri.empty()) {
+        e.why = made->why;
+        if (!made->uri.empty()) {
             e.css_class = "im" + std::to_string(entries_.size());
-            css_ += "." + e.css_class + " { background-image: url(" + uri + "); }\n";
-            e.aspect = png_aspect(in_dir(out_dir_, relative));
+            css_ += "." + e.css_class + " { background-image: url(" + made->uri + "); }\n";
+            e.aspect = made->aspect;
         }
         return entries_.emplace(relative, e).first->second;
-    }
-    // "W / H" from the PNG header, for the figure's shape.
-    static std::string png_aspect(const std::string& path) {
-        std::ifstream file(path, std::ios::binary);
-        std::string head(24, '\0');
-        file.read(head.data(), static_cast<std::streamsize>(head.size()));
-        int w = 0, h = 0;
-        return fw::png_header_size(head, w, h) && w > 0 && h > 0
-                   ? std::to_string(w) + " / " + std::to_string(h)
-                   : "1 / 1";
     }
 
     const std::string& out_dir_;
     std::map<std::string, Entry> entries_;
+    const std::map<std::string, PageImage>* ahead_ = nullptr;
     std::string css_;
 };
 
@@ -378,7 +390,10 @@ std::string html_report(const GradeRun& run, const std::string& out_dir) {
     ImageTable images(out_dir);
     std::ostringstream body;
     body << "<main>\n<h1>Grading report</h1>\n" << overview_html(run);
-    for (size_t li = 0; li < run.labs.size(); ++li) body << lab_html(run.labs[li], li, images);
+    for (size_t li = 0; li < run.labs.size(); ++li) {
+        images.read_ahead(&run.labs[li].page_images);
+        body << lab_html(run.labs[li], li, images);
+    }
     body << "</main>\n";
     std::ostringstream h;
     h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -386,6 +401,13 @@ std::string html_report(const GradeRun& run, const std::string& out_dir) {
       << "</title>\n<style>" << kStyle << images.css() << "</style>\n</head>\n<body>\n"
       << body.str() << "</body>\n</html>\n";
     return h.str();
+}
+
+void read_page_images(LabResult& lab, const std::string& out_dir) {
+    for (const CheckResult& c : lab.checks)
+        for (const std::string* relative : {&c.rendered, &c.expected, &c.difference})
+            if (!relative->empty() && !lab.page_images.count(*relative))
+                lab.page_images.emplace(*relative, page_image(in_dir(out_dir, *relative)));
 }
 
 }  // namespace grading::report

@@ -50,8 +50,14 @@ void write_text_file(const std::string& path, const std::string& text);
 std::string sandbox_line(const std::vector<SandboxLayer>& layers);
 std::string sandbox_html(const std::vector<SandboxLayer>& layers);
 
-// index.html: reads the images the checks name (relative to out_dir).
+// index.html: reads the images the checks name (relative to out_dir), but
+// those a lab's page_images already holds.
 std::string html_report(const GradeRun& run, const std::string& out_dir);
+
+// Every picture the page can show of `lab`'s checks, read from its files
+// under out_dir into lab.page_images: for a lab judged while the next one
+// renders, so that the page, made last, only puts them together.
+void read_page_images(LabResult& lab, const std::string& out_dir);
 
 // index.html's style sheet (the text of its <style> block, without the
 // images), which the class's page (`course grade-class`) shares.

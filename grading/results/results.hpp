@@ -3,6 +3,7 @@
 // are all written from this one structure.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,12 @@ struct LabTime {
     double report = 0.0;        // course: the frames' images for the report
 };
 
+// A picture of the report page (index.html): the PNG as a data: URI and its
+// shape ("W / H"); or, when it could not be read, why.
+struct PageImage {
+    std::string uri, aspect, why;
+};
+
 struct LabResult {
     std::string lab;
     LabStatus status;
@@ -113,6 +120,10 @@ struct LabResult {
     // (seed_key_missed): said once on stderr, in no report.
     bool shader_cache_missed = false;
     LabTime time;
+    // The page's pictures of this lab's checks, by their path in the report
+    // folder, read while the child went on with the next lab
+    // (report::read_page_images); the page reads any other itself.
+    std::map<std::string, PageImage> page_images;
 
     double score() const;
     double max_score() const;
