@@ -171,17 +171,19 @@ std::vector<Thumbnails::Picture> Thumbnails::for_checkpoint(const CheckpointResu
     return pictures;
 }
 
-std::string within_limit(size_t limit, const std::function<std::string(size_t)>& write,
-                         const std::function<bool()>& left_out) {
-    std::string text = write(0);
-    if (text.size() >= limit || !left_out()) return text;
+std::string within_limit(size_t limit, Thumbnails& thumbnails,
+                         const std::function<std::string()>& write) {
+    thumbnails.restart(0);
+    std::string text = write();
+    if (text.size() >= limit || thumbnails.skipped() == 0) return text;
     size_t budget = limit - text.size();
     // Pictures never take more than the budget, but each checkpoint's table
     // around them is a little longer than the line saying they were left out:
     // retry with the overshoot taken off, then with half the budget, and at
     // worst keep the text alone.
     for (int attempt = 0; attempt < 8 && budget > 0; ++attempt) {
-        std::string with = write(budget);
+        thumbnails.restart(budget);
+        std::string with = write();
         if (with.size() <= limit) return with;
         const size_t over = with.size() - limit;
         budget = attempt < 3 && budget > over ? budget - over : budget / 2;

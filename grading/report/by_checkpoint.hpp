@@ -85,14 +85,14 @@ private:
 // (PrairieLearn's limit, and a page a browser shows quickly).
 constexpr size_t kResultsLimit = 900 * 1024;
 
-// What `write(budget)` returns with the largest budget for pictures (bytes of
-// data: URIs) that keeps it within `limit` bytes: the text comes first,
-// whatever it takes (write(0)), the pictures get what is left of `limit`, and
-// less when the tables around them overshoot. `left_out()`, asked after
-// write(0), says whether it left pictures out: when none was, the text is
-// all there is, and it is not written again.
-std::string within_limit(size_t limit, const std::function<std::string(size_t budget)>& write,
-                         const std::function<bool()>& left_out);
+// What `write()` returns with the largest budget for `thumbnails`' pictures
+// (bytes of data: URIs) that keeps it within `limit` bytes: the text comes
+// first, whatever it takes (written with a budget of 0), the pictures get
+// what is left of `limit`, and less when the tables around them overshoot.
+// When the text alone left no picture out, it is all there is, and it is
+// not written again.
+std::string within_limit(size_t limit, Thumbnails& thumbnails,
+                         const std::function<std::string()>& write);
 
 // The lab's number from its folder-free id ("03_shading" -> "3"), else
 // `index`: Gradescope orders tests by number.

@@ -149,13 +149,8 @@ std::string gradescope_results_json(const GradeRun& run, const std::string& out_
                                     HiddenAs hidden_as) {
     // Pictures, checkpoint by checkpoint in order, in what the text leaves of the limit.
     Thumbnails thumbnails(out_dir, 0);
-    return within_limit(
-        kResultsLimit,
-        [&](size_t budget) {
-            thumbnails.restart(budget);
-            return results_json(run, thumbnails, hidden_as);
-        },
-        [&] { return thumbnails.skipped() > 0; });
+    return within_limit(kResultsLimit, thumbnails,
+                        [&] { return results_json(run, thumbnails, hidden_as); });
 }
 
 }  // namespace report

@@ -116,13 +116,8 @@ std::string prairielearn_results_json(const GradeRun& run, const std::string& ou
         for (const LabResult& lab : run.labs) fields += 3 * by_checkpoint(lab).size();
         cap = kResultsLimit / (2 * fields);
     }
-    return within_limit(
-        kResultsLimit,
-        [&](size_t budget) {
-            thumbnails.restart(budget);
-            return results_json(run, thumbnails, cap);
-        },
-        [&] { return thumbnails.skipped() > 0; });
+    return within_limit(kResultsLimit, thumbnails,
+                        [&] { return results_json(run, thumbnails, cap); });
 }
 
 std::string prairielearn_not_gradable_json(const std::string& reason, const std::string& log) {
