@@ -36,6 +36,13 @@ inline const char* non_finite_name(double v) {
 // nullopt for anything else.
 std::optional<double> json_number(const nlohmann::json& j);
 
+// Appends `value` as compact JSON text: what value.dump() writes, read back
+// as the same value of the same types (a float keeps a '.' or an
+// exponent; a number that is not finite is null, as dump() has it), in a
+// fraction of dump()'s time: std::to_chars writes the numbers. For a lab's
+// thousands of unit results.
+void append_json(std::string& out, const nlohmann::json& value);
+
 // The scalars, out of line (json_glm.cpp) like throw_mismatch: a lab's file
 // then compiles none of nlohmann's conversions and exceptions for them.
 template <>

@@ -182,11 +182,16 @@ std::string units_text(const RegisteredLab& lab, const json& groups) {
         for (size_t k = 0; k < args->size(); ++k) {
             if (text.size() > 1) text += ',';
             text += "\"u" + std::to_string(first + static_cast<long>(k)) + "\":";
+            const size_t entry = text.size();
             try {
                 if (!f)
                     throw Error("lab '" + lab.info.id + "' has no unit function '" + name + "'");
-                text += "{\"result\":" + f->call((*args)[k]).dump() + "}";
+                const json result = f->call((*args)[k]);
+                text += "{\"result\":";
+                append_json(text, result);
+                text += '}';
             } catch (const std::exception& e) {
+                text.resize(entry);  // a result cut short by a string it cannot write
                 text += "{\"error\":" +
                         json(e.what()).dump(-1, ' ', false, json::error_handler_t::replace) + "}";
             }
