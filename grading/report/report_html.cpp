@@ -9,18 +9,13 @@
 // failed ones first: the rendered, expected and difference images, then its
 // checks, Observed beside Expected.
 #include <algorithm>
-#include <cerrno>
 #include <cstdint>
-#include <cstring>
-#include <fstream>
-#include <iterator>
-#include <map>
 #include <numeric>
 #include <sstream>
 #include <vector>
 
-#include "framework/image.hpp"
 #include "grading/report/by_checkpoint.hpp"
+#include "grading/report/page_images.hpp"
 #include "grading/report/report_text.hpp"
 
 namespace grading::report {
@@ -77,95 +72,6 @@ pre.note { background: none; padding: 0; color: #555; }
 .missing { padding: 2em 0.5em; border: 1px dashed #c62828; color: #b3261e; font-size: 0.9em;
            text-align: center; word-break: break-all; }
 )";
-
-// The PNG file at `path` for the page: its data: URI and shape, or why not.
-PageImage page_image(const std::string& path) {
-    PageImage image;
-    std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        image.why = std::strerror(errno);
-        return image;
-    }
-    std::ostringstream read;
-    read << file.rdbuf();
-    const std::string bytes = read.str();
-    if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) {
-        image.why = "not a PNG file";
-        return image;
-    }
-    image.uri = "data:image/png;base64," + base64(bytes);
-    std::string head = bytes.substr(0, 24);
-    head.resize(24, '\0');
-    int w = 0, h = 0;
-    image.aspect = fw::png_header_size(head, w, h) && w > 0 && h > 0
-                       ? std::to_string(w) + " / " + std::to_string(h)
-                       : "1 / 1";
-    return image;
-}
-
-// Each image file is embedded once, as the background of a CSS class in the
-// <style> block, and every figure that shows it names the class: the same
-// frame appears in every check of its checkpoint, and embedding it each time
-// would multiply the report's size.
-class ImageTable {
-public:
-    explicit ImageTable(const std::string& out_dir) : out_dir_(out_dir) {}
-    // The pictures read ahead for the lab whose figures come next (or none).
-    void read_ahead(const std::map<std::string, PageImage>* images) { ahead_ = images; }
-
-    // The figure for `relative` (under out_dir), or a note saying why there
-    // is none (`none`, else "no CAPTION image").
-    std::string figure(const std::string& caption, const std::string& relative,
-                       const std::string& none = "") {
-        std::string body;
-        if (relative.empty()) {
-            body = "<div class=\"missing\">" + (none.empty() ? "no " + caption + " image" : none) +
-                   "</div>";
-        } else {
-            const Entry& e = entry(relative);
-            body = e.css_class.empty()
-                       ? "<div class=\"missing\">image not available: " +
-                             escape_markup(relative + " (" + e.why + ")") + "</div>"
-                       : "<div class=\"shot " + e.css_class + "\" role=\"img\" aria-label=\"" +
-                             caption + " image\" title=\"" + escape_markup(relative) +
-                             "\" style=\"aspect-ratio: " + e.aspect + "\"></div>";
-        }
-        return "<figure>" + body + "<figcaption>" + caption + "</figcaption></figure>";
-    }
-    const std::string& css() const { return css_; }
-
-private:
-    struct Entry {
-        std::string css_class, aspect, why;
-    };
-    const Entry& entry(const std::string& relative) {
-        auto found = entries_.find(relative);
-        if (found != entries_.end()) return found->second;
-        PageImage own;
-        const PageImage* made = nullptr;
-        if (ahead_) {
-            const auto ahead = ahead_->find(relative);
-            if (ahead != ahead_->end()) made = &ahead->second;
-        }
-        if (!made) {
-            own = page_image(in_dir(out_dir_, relative));
-            made = &own;
-        }
-        Entry e;
-        e.why = made->why;
-        if (!made->uri.empty()) {
-            e.css_class = "im" + std::to_string(entries_.size());
-            css_ += "." + e.css_class + " { background-image: url(" + made->uri + "); }\n";
-            e.aspect = made->aspect;
-        }
-        return entries_.emplace(relative, e).first->second;
-    }
-
-    const std::string& out_dir_;
-    std::map<std::string, Entry> entries_;
-    const std::map<std::string, PageImage>* ahead_ = nullptr;
-    std::string css_;
-};
 
 std::string card_id(size_t lab, size_t checkpoint) {
     return "cp-" + std::to_string(lab) + "-" + std::to_string(checkpoint);
@@ -401,13 +307,6 @@ std::string html_report(const GradeRun& run, const std::string& out_dir) {
       << "</title>\n<style>" << kStyle << images.css() << "</style>\n</head>\n<body>\n"
       << body.str() << "</body>\n</html>\n";
     return h.str();
-}
-
-void read_page_images(LabResult& lab, const std::string& out_dir) {
-    for (const CheckResult& c : lab.checks)
-        for (const std::string* relative : {&c.rendered, &c.expected, &c.difference})
-            if (!relative->empty() && !lab.page_images.count(*relative))
-                lab.page_images.emplace(*relative, page_image(in_dir(out_dir, *relative)));
 }
 
 }  // namespace grading::report
