@@ -23,6 +23,7 @@
 #include "framework/lab.hpp"
 #include "framework/lab_buffers.hpp"
 #include "framework/render.hpp"
+#include "framework/runner/output_queue.hpp"
 #include "framework/trace/calls.hpp"
 #include "framework/trace/record.hpp"
 #include "framework/trace/usage.hpp"
@@ -39,24 +40,11 @@ using nlohmann::json;
 // for a frame. child.json is a file either way: its rename ends the lab.
 int output_fd = -1;
 
-// Writes `parts` in order, whatever share of them each writev takes.
-void write_all(std::vector<iovec> parts, const std::string& path) {
-    size_t first = 0;
-    while (first < parts.size()) {
-        const int count = static_cast<int>(std::min<size_t>(parts.size() - first, IOV_MAX));
-        const ssize_t n = ::writev(output_fd, &parts[first], count);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0)
-            throw Error("cannot send '" + path + "' to course on descriptor " +
-                        std::to_string(output_fd) + ": " + std::strerror(errno));
-        size_t done = static_cast<size_t>(n);
-        while (first < parts.size() && done >= parts[first].iov_len) done -= parts[first++].iov_len;
-        if (done > 0) {
-            parts[first].iov_base = static_cast<char*>(parts[first].iov_base) + done;
-            parts[first].iov_len -= done;
-        }
-    }
-}
+// With several labs in the child, the records go through a queue
+// (output_queue.hpp); with one, each is written before the lab goes on.
+OutputQueue* output_queue = nullptr;
+// The records a queue holds at most: a few frames of 512 x 512.
+constexpr size_t kQueued = 8 << 20;
 
 // Where a job's wall time went, for child.json's "seconds" (course grade
 // --verbose prints it per lab): the unit calls, the context and the lab's
@@ -75,12 +63,12 @@ std::string record_line(size_t size, const std::string& path) {
     return "OUTPUT " + std::to_string(size) + " " + path + "\n";
 }
 
-void put_output(const std::string& path, const std::string& bytes) {
+void put_output(const std::string& path, std::string bytes) {
     if (output_fd >= 0) {
-        const std::string line = record_line(bytes.size(), path);
-        write_all({{const_cast<char*>(line.data()), line.size()},
-                   {const_cast<char*>(bytes.data()), bytes.size()}},
-                  path);
+        std::string line = record_line(bytes.size(), path);
+        if (output_queue)
+            return output_queue->push({path, std::move(line), std::move(bytes), Image()});
+        write_parts(output_fd, {{line.data(), line.size()}, {bytes.data(), bytes.size()}}, path);
         return;
     }
     std::ofstream out(path, std::ios::binary);
@@ -90,15 +78,17 @@ void put_output(const std::string& path, const std::string& bytes) {
 
 // A frame as encode_pam writes it. Sent, its rows go from the image to the
 // pipe as they are: no copy of the frame is made.
-void put_pam(const std::string& path, const Image& image) {
+void put_pam(const std::string& path, Image image) {
     if (output_fd < 0) return put_output(path, encode_pam(image));
     const std::string header = pam_header(image);
     const size_t row = static_cast<size_t>(image.width) * sizeof(Rgba8);
-    const std::string head = record_line(header.size() + row * image.height, path) + header;
-    std::vector<iovec> parts = {{const_cast<char*>(head.data()), head.size()}};
-    for (int y = image.height - 1; y >= 0; --y)  // bottom-first storage, top row first
-        parts.push_back({const_cast<Rgba8*>(&image.at(0, y)), row});
-    write_all(std::move(parts), path);
+    OutputRecord record{path, record_line(header.size() + row * image.height, path) + header, "",
+                        std::move(image)};
+    if (output_queue) return output_queue->push(std::move(record));
+    std::vector<iovec> parts = {{record.head.data(), record.head.size()}};
+    for (int y = record.rows.height - 1; y >= 0; --y)  // bottom-first storage, top row first
+        parts.push_back({&record.rows.at(0, y), row});
+    write_parts(output_fd, std::move(parts), path);
 }
 
 void write_json(const std::string& path, const json& value) {
@@ -146,13 +136,13 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     }
     if (record) {
         const Clock::time_point start = Clock::now();
-        const std::string text = gl_record::record_text(recorder->end());
+        std::string text = gl_record::record_text(recorder->end());
         seconds.record += since(start);
-        put_output(base + ".record.json", text);
+        put_output(base + ".record.json", std::move(text));
     }
     renderer.read_back(params, width, height, 0.0, read, out);
     // Raw pixels: course judges them and encodes only what a report shows.
-    put_pam(base + ".pam", out.color);
+    put_pam(base + ".pam", std::move(out.color));
     if (read.depth) put_output(base + ".pfm", encode_pfm(out.depth));
     if (read.buffers) put_output(base + ".buffers.json", buffers_json(out.buffers));
     write_json(base + ".stats.json", out.stats);
@@ -336,7 +326,8 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
     if (renderer)
         for (const ShaderError* e : renderer->programs().build_errors())
             shader_errors.push_back({{"file", e->file()}, {"message", e->what()}});
-    // What the lab printed is in the pipe before course sees the lab done.
+    // What the lab sent and printed is in the pipes before course sees the lab done.
+    if (output_queue) output_queue->drain();
     std::fflush(stdout);
     std::fflush(stderr);
     // Written whole, then renamed: course takes the name as the lab's end.
@@ -366,6 +357,13 @@ void grade_children(const std::vector<std::string>& jobs, const std::vector<std:
                          std::to_string(outs.size()) + " --out; give one --out per --job");
     // In turn, each in a context of its own; the first that throws ends the
     // child, and course grades it and the labs after it again.
+    std::unique_ptr<OutputQueue> queue;
+    if (output_fd >= 0 && jobs.size() > 1)
+        queue = std::make_unique<OutputQueue>(output_fd, kQueued);
+    output_queue = queue.get();
+    struct Forget {
+        ~Forget() { output_queue = nullptr; }  // before the queue ends, a throw too
+    } forget;
     for (size_t i = 0; i < jobs.size(); ++i) grade_child(jobs[i], outs[i], backend);
 }
 

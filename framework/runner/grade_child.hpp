@@ -39,7 +39,9 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
 // Several labs in one process, in turn: jobs[i] into outs[i]. Each lab has a
 // context of its own, and its child.json appears (by rename) only when all
 // of its outputs are written and its output is flushed, so course can tell
-// how far the child got and when each lab ended.
+// how far the child got and when each lab ended. With several jobs the
+// records on `outputs_fd` are written by a thread of their own while the
+// lab draws on (output_queue.hpp); with one, each before the lab goes on.
 // `outputs_fd`: --output-fd, or -1 for files.
 void grade_children(const std::vector<std::string>& jobs, const std::vector<std::string>& outs,
                     const std::string& backend, int outputs_fd = -1);
