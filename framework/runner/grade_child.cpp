@@ -1,16 +1,11 @@
 #include "framework/runner/grade_child.hpp"
 
 #include <fcntl.h>
-#include <limits.h>
 #include <malloc.h>
-#include <sys/uio.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -63,13 +58,16 @@ std::string record_line(size_t size, const std::string& path) {
     return "OUTPUT " + std::to_string(size) + " " + path + "\n";
 }
 
+// A record for course: queued, or written before the lab goes on.
+void send(OutputRecord record) {
+    if (output_queue) return output_queue->push(std::move(record));
+    send_record(output_fd, record);
+}
+
 void put_output(const std::string& path, std::string bytes) {
     if (output_fd >= 0) {
         std::string line = record_line(bytes.size(), path);
-        if (output_queue)
-            return output_queue->push({path, std::move(line), std::move(bytes), Image()});
-        write_parts(output_fd, {{line.data(), line.size()}, {bytes.data(), bytes.size()}}, path);
-        return;
+        return send({path, std::move(line), std::move(bytes), Image()});
     }
     std::ofstream out(path, std::ios::binary);
     if (!out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())))
@@ -81,14 +79,8 @@ void put_output(const std::string& path, std::string bytes) {
 void put_pam(const std::string& path, Image image) {
     if (output_fd < 0) return put_output(path, encode_pam(image));
     const std::string header = pam_header(image);
-    const size_t row = static_cast<size_t>(image.width) * sizeof(Rgba8);
-    OutputRecord record{path, record_line(header.size() + row * image.height, path) + header, "",
-                        std::move(image)};
-    if (output_queue) return output_queue->push(std::move(record));
-    std::vector<iovec> parts = {{record.head.data(), record.head.size()}};
-    for (int y = record.rows.height - 1; y >= 0; --y)  // bottom-first storage, top row first
-        parts.push_back({&record.rows.at(0, y), row});
-    write_parts(output_fd, std::move(parts), path);
+    const size_t pixels = static_cast<size_t>(image.width) * image.height * sizeof(Rgba8);
+    send({path, record_line(header.size() + pixels, path) + header, "", std::move(image)});
 }
 
 void write_json(const std::string& path, const json& value) {

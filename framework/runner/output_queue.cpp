@@ -1,11 +1,13 @@
 #include "framework/runner/output_queue.hpp"
 
 #include <limits.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <vector>
 
 #include "framework/error.hpp"
 
@@ -17,26 +19,22 @@ size_t record_bytes(const OutputRecord& r) {
     return r.head.size() + r.body.size() + r.rows.pixels.size() * sizeof(Rgba8);
 }
 
-void write_record(int fd, OutputRecord& r) {
-    std::vector<iovec> parts = {{r.head.data(), r.head.size()}};
-    if (!r.body.empty()) parts.push_back({r.body.data(), r.body.size()});
-    const size_t row = static_cast<size_t>(r.rows.width) * sizeof(Rgba8);
-    for (int y = r.rows.height - 1; y >= 0; --y)  // bottom-first storage, top row first
-        parts.push_back({&r.rows.at(0, y), row});
-    write_parts(fd, std::move(parts), r.path);
-}
-
 }  // namespace
 
-void write_parts(int fd, std::vector<iovec> parts, const std::string& path) {
+void send_record(int fd, OutputRecord& record) {
+    std::vector<iovec> parts = {{record.head.data(), record.head.size()}};
+    if (!record.body.empty()) parts.push_back({record.body.data(), record.body.size()});
+    const size_t row = static_cast<size_t>(record.rows.width) * sizeof(Rgba8);
+    for (int y = record.rows.height - 1; y >= 0; --y)  // bottom-first storage, top row first
+        parts.push_back({&record.rows.at(0, y), row});
     size_t first = 0;
     while (first < parts.size()) {
         const int count = static_cast<int>(std::min<size_t>(parts.size() - first, IOV_MAX));
         const ssize_t n = ::writev(fd, &parts[first], count);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0)
-            throw Error("cannot send '" + path + "' to course on descriptor " + std::to_string(fd) +
-                        ": " + std::strerror(errno));
+            throw Error("cannot send '" + record.path + "' to course on descriptor " +
+                        std::to_string(fd) + ": " + std::strerror(errno));
         size_t done = static_cast<size_t>(n);
         while (first < parts.size() && done >= parts[first].iov_len) done -= parts[first++].iov_len;
         if (done > 0) {
@@ -93,7 +91,7 @@ void OutputQueue::run() {
         lock.unlock();
         std::string error;
         try {
-            write_record(fd_, record);
+            send_record(fd_, record);
         } catch (const Error& e) {
             error = e.what();
         }
