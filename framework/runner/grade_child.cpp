@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <future>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -284,15 +285,18 @@ struct Observers {
 
 }  // namespace
 
-void grade_child(const std::string& job_path, const std::string& out_dir,
-                 const std::string& backend) {
+namespace {
+
+// The lab of `job` (read from `job_path`) into `out_dir`; returns the job,
+// for the caller to free.
+json grade_job(json job, const std::string& job_path, const std::string& out_dir,
+               const std::string& backend) {
     // A frame, its readback and its file are a megabyte each, made and freed
     // for every checkpoint: keep them in the heap, not in fresh zeroed pages.
     mallopt(M_MMAP_THRESHOLD, 64 << 20);
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
     seconds = Seconds();
     Clock::time_point start = Clock::now();
-    json job = read_job(job_path);
     const RegisteredLab& lab = find_lab(job.value("lab", ""));
     const ShaderOverrides overrides(job, job_path);
 
@@ -336,13 +340,34 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
                                   {"usage", seconds.usage}}}});
     if (std::rename((done + ".part").c_str(), done.c_str()) != 0)
         throw Error("cannot rename '" + done + ".part' to '" + done + "'");
+    return job;
+}
+
+// The byte course sends on --job-gate-fd once the job file `job` is whole.
+void await_job(int fd, const std::string& job) {
+    char byte = 0;
+    ssize_t n;
+    while ((n = read(fd, &byte, 1)) < 0 && errno == EINTR) {
+    }
+    if (n != 1)
+        throw Error("grade-child: course sent no job '" + job +
+                    "': --job-gate-fd ended before it (course stopped planning)");
+}
+
+}  // namespace
+
+void grade_child(const std::string& job_path, const std::string& out_dir,
+                 const std::string& backend) {
+    grade_job(read_job(job_path), job_path, out_dir, backend);
 }
 
 void grade_children(const std::vector<std::string>& jobs, const std::vector<std::string>& outs,
-                    const std::string& backend, int outputs_fd) {
-    if (outputs_fd >= 0 && fcntl(outputs_fd, F_GETFD) < 0)
-        throw UsageError("grade-child: --output-fd " + std::to_string(outputs_fd) +
-                         " is not an open descriptor");
+                    const std::string& backend, int outputs_fd, int job_gate_fd) {
+    for (const auto& [option, fd] :
+         {std::pair{"--output-fd", outputs_fd}, {"--job-gate-fd", job_gate_fd}})
+        if (fd >= 0 && fcntl(fd, F_GETFD) < 0)
+            throw UsageError(std::string("grade-child: ") + option + " " + std::to_string(fd) +
+                             " is not an open descriptor");
     output_fd = outputs_fd;
     if (jobs.size() != outs.size())
         throw UsageError("grade-child: " + std::to_string(jobs.size()) + " --job but " +
@@ -356,7 +381,24 @@ void grade_children(const std::vector<std::string>& jobs, const std::vector<std:
     struct Forget {
         ~Forget() { output_queue = nullptr; }  // before the queue ends, a throw too
     } forget;
-    for (size_t i = 0; i < jobs.size(); ++i) grade_child(jobs[i], outs[i], backend);
+    // Job i + 1 is read and parsed on a thread of its own while lab i runs
+    // (a unit-heavy job is thousands of numbers), and the job of the lab
+    // before freed there; a job that cannot be read throws as lab i + 1
+    // begins, as it would read there.
+    const auto fetch = [&](size_t i, json done) {
+        return std::async(std::launch::async, [&, i, done = std::move(done)]() mutable {
+            done = json();  // freed here
+            if (job_gate_fd >= 0) await_job(job_gate_fd, jobs[i]);
+            return read_job(jobs[i]);
+        });
+    };
+    std::future<json> next = fetch(0, json());
+    json ended;  // the job of the lab that ended last
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        json job = next.get();
+        if (i + 1 < jobs.size()) next = fetch(i + 1, std::move(ended));
+        ended = grade_job(std::move(job), jobs[i], outs[i], backend);
+    }
 }
 
 }  // namespace fw

@@ -42,8 +42,12 @@ void grade_child(const std::string& job_path, const std::string& out_dir,
 // how far the child got and when each lab ended. With several jobs the
 // records on `outputs_fd` are written by a thread of their own while the
 // lab draws on (output_queue.hpp); with one, each before the lab goes on.
-// `outputs_fd`: --output-fd, or -1 for files.
+// `outputs_fd`: --output-fd, or -1 for files. With `job_gate_fd`
+// (--job-gate-fd), the child reads one byte there before it opens each job
+// file: course starts the child first and writes each job as it is planned
+// (docs/contract.md, `course grade`); an end of the descriptor before a job
+// ends the child with an error.
 void grade_children(const std::vector<std::string>& jobs, const std::vector<std::string>& outs,
-                    const std::string& backend, int outputs_fd = -1);
+                    const std::string& backend, int outputs_fd = -1, int job_gate_fd = -1);
 
 }  // namespace fw

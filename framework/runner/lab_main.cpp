@@ -200,7 +200,7 @@ Command add_render_checkpoints(CLI::App& app, RenderCheckpointsArgs& a) {
 struct GradeChildArgs {
     std::vector<std::string> jobs, outs;
     std::string backend;
-    int output_fd = -1;
+    int output_fd = -1, job_gate_fd = -1;
 };
 
 Command add_grade_child(CLI::App& app, GradeChildArgs& a) {
@@ -217,8 +217,12 @@ Command add_grade_child(CLI::App& app, GradeChildArgs& a) {
     grade_child->add_option("--backend", a.backend, "auto|osmesa|egl");
     grade_child->add_option("--output-fd", a.output_fd,
                             "Send every output but child.json as records on this descriptor");
-    return {grade_child,
-            done([&a] { fw::grade_children(a.jobs, a.outs, a.backend, a.output_fd); })};
+    grade_child->add_option("--job-gate-fd", a.job_gate_fd,
+                            "Read a byte on this descriptor before each job file: course "
+                            "writes a job once this process is running");
+    return {grade_child, done([&a] {
+                fw::grade_children(a.jobs, a.outs, a.backend, a.output_fd, a.job_gate_fd);
+            })};
 }
 
 struct RunArgs {

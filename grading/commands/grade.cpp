@@ -204,27 +204,35 @@ LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& c
     return result;
 }
 
-// Labs graded by one child: planned here, on the worker, while other
-// workers' children run (a lab's unit checks' random arguments, seeded by the
-// run's seed and the lab, are thousands of values), run in one child (a lab
-// that breaks it is graded again alone: run_lab_children), and each judged,
-// on as many threads as `threads()` says, as soon as it has ended, while
-// the child goes on with the next.
+// Labs graded by one child: planned here, on the worker, while the child
+// starts and other workers' children run (a lab's unit checks' random
+// arguments, seeded by the run's seed and the lab, are thousands of values),
+// run in one child (a lab that breaks it is graded again alone:
+// run_lab_children), and each judged, on as many threads as `threads()`
+// says, as soon as it has ended, while the child goes on with the next.
 std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const ChildSetup& setup,
                                   const std::function<int()>& threads) {
     std::vector<LabPlan> plans(labs.size());
     std::vector<nlohmann::json> jobs(labs.size());
     std::vector<double> plan_seconds(labs.size());
-    // Side by side: the child starts when every job is written. Each plan
-    // depends on its lab and the seed alone.
-    parallel_for(labs.size(), threads(), [&](size_t i) {
-        const auto start = std::chrono::steady_clock::now();
-        plans[i] = plan_lab(*labs[i], setup.seed, PlanFor::Grading);
-        // Moved, not copied: a unit-heavy lab's job holds thousands of cases.
-        jobs[i] = std::move(plans[i].job);
-        plan_seconds[i] =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    });
+    std::vector<std::string> ids;
+    for (const LabData* lab : labs) ids.push_back(lab->id);
+    // Side by side, while the child starts: each plan depends on its lab and
+    // the seed alone, and its job goes to the child as soon as it is made.
+    const JobFeed plan_jobs = [&](const JobGive& give) {
+        parallel_for(labs.size(), threads(), [&](size_t i) {
+            const auto start = std::chrono::steady_clock::now();
+            plans[i] = plan_lab(*labs[i], setup.seed, PlanFor::Grading);
+            std::string text = plans[i].job.dump();
+            // Kept: what file isolation reads (the lab and its renders), not
+            // the thousands of unit cases the child has in its text.
+            jobs[i] = std::move(plans[i].job);
+            jobs[i].erase("units");
+            plan_seconds[i] =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            give(i, std::move(text));
+        });
+    };
     std::vector<LabResult> results(labs.size());
     std::vector<char> ran(labs.size(), 0);  // the lab's child ran to its end
     // Each lab's unit results parsed as they come, while its frames are drawn.
@@ -239,8 +247,9 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
     const LabReady ended = [&judging](size_t i, LabChild&& child) {
         judging.push({i, std::move(child)});
     };
-    run_lab_children(setup.lab_binary, jobs, setup.backend, setup.limits, setup.user, setup.cache,
-                     ended, [&early](const std::string& path, const std::string& bytes) {
+    run_lab_children(setup.lab_binary, ids, plan_jobs, setup.backend, setup.limits, setup.user,
+                     setup.cache, ended,
+                     [&early](const std::string& path, const std::string& bytes) {
                          early.record_done(path, bytes);
                      });
     judging.finish();

@@ -52,7 +52,10 @@ json job_for(const json& lab_job, const std::vector<CheckResult>& checks) {
         if (!c.passed && starts_search(c.kind)) failed.insert(c.checkpoint);
     json job = {
         {"lab", lab_job.value("lab", "")}, {"renders", json::array()}, {"units", json::array()}};
-    for (const json& r : lab_job.value("renders", json::array()))
+    // Read in place: a copy of the lab's renders would cost every lab, failed or not.
+    const auto renders = lab_job.find("renders");
+    if (failed.empty() || renders == lab_job.end() || !renders->is_array()) return job;
+    for (const json& r : *renders)
         if (failed.count(r.value("name", ""))) job["renders"].push_back(r);
     return job;
 }

@@ -233,11 +233,12 @@ LabStatus exit_status(int wait_status, const ChildStart& c) {
 
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
                    const ChildLimits& limits, const RunAsUser* user,
-                   const std::vector<std::string>& env, LabMarks* marks,
-                   StreamedOutputs* streamed) {
+                   const std::vector<std::string>& env, LabMarks* marks, StreamedOutputs* streamed,
+                   int job_gate) {
     static const SeccompFilter filter;  // built once, before any fork
     ChildStart start(argv, dir, limits, user, env);
     start.filter = &filter;
+    start.gate = job_gate;
     if (marks) start.cpu_seconds *= std::max<rlim_t>(1, marks->files.size());
     std::unique_ptr<LabCgroup> cgroup;
     if (limits.cgroups) {

@@ -116,11 +116,12 @@ private:
 
 // Runs argv[0] with argv in `dir` and waits for it within the limits. `env`
 // ("NAME=value") is added to course's environment, replacing what it names.
-// With `streamed`, the child's kOutputFd is a pipe read into it.
+// With `streamed`, the child's kOutputFd is a pipe read into it; with
+// `job_gate`, that descriptor is the child's kJobGateFd (job_gate.hpp).
 ChildRun run_child(const std::vector<std::string>& argv, const std::string& dir,
                    const ChildLimits& limits, const RunAsUser* user,
                    const std::vector<std::string>& env = {}, LabMarks* marks = nullptr,
-                   StreamedOutputs* streamed = nullptr);
+                   StreamedOutputs* streamed = nullptr, int job_gate = -1);
 
 // The files a finished child left, and the outputs it sent instead of files
 // (StreamedOutputs::take), read with limits. Every failure is a sentence fit
@@ -162,7 +163,9 @@ private:
 struct LabChild {
     std::shared_ptr<WorkDir> dir;  // shared by the labs of one child (run_lab_children)
     ChildRun run;
-    std::unique_ptr<ChildOutputs> outputs;
+    // Shared: a child's last lab is judged as it ends, and again with what
+    // the child printed after it, on the same outputs (run_lab_children).
+    std::shared_ptr<ChildOutputs> outputs;
     // The child's Mesa made its shader cache under a key the --shader-cache
     // did not hold (seed_key_missed), so it compiled its shaders afresh.
     bool cache_missed = false;
@@ -196,6 +199,10 @@ bool seed_key_missed(const ShaderCache& cache, const std::string& work_dir);
 LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
                        const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
                        const ShaderCache& shader_cache = {}, const RecordDone& done = {});
+// The same for a job already in its file's text.
+LabChild run_lab_child(const std::string& lab_binary, const std::string& job_text,
+                       const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
+                       const ShaderCache& shader_cache = {}, const RecordDone& done = {});
 
 // Several labs in one child, in turn (`lab grade-child` with a --job and
 // --out for each), each in a subdirectory of one work directory, for the
@@ -205,13 +212,28 @@ LabChild run_lab_child(const std::string& lab_binary, const nlohmann::json& job,
 // that a lab's result never depends on the labs beside it. `ready` gets each
 // job's index and result as soon as it is known (a lab that ended in the
 // child while the child goes on with the next), on the calling thread or the
-// one watching the child; when the child fails after its last lab, each lab
-// is graded again alone and `ready` gets it a second time, to replace the
-// first. `done` as run_lab_child's.
+// one watching the child (the last lab too, as the child exits). `ready`
+// gets a lab a second time, to replace the first: the last lab with what the
+// child printed after it added to its log, when it printed anything; every
+// lab, each graded again alone, when the child fails after its last lab.
+// `done` as run_lab_child's.
 using LabReady = std::function<void(size_t, LabChild&&)>;
 void run_lab_children(const std::string& lab_binary, const std::vector<nlohmann::json>& jobs,
                       const std::string& backend, const ChildLimits& limits, const RunAsUser* user,
                       const ShaderCache& shader_cache, const LabReady& ready,
+                      const RecordDone& done = {});
+// The same for the labs `labs` (their ids) whose jobs are not yet planned:
+// the child starts at once, and `feed`, on a thread of its own, plans them
+// and gives each job's text (any order, from any thread) as it is made; the
+// child opens lab i's job once it and those before it are given
+// (job_gate.hpp). `ready` is called for lab i only after `feed` gave it, and
+// sees what the feed made before it. What `feed` throws is thrown here once
+// the child has ended.
+using JobGive = std::function<void(size_t, std::string)>;
+using JobFeed = std::function<void(const JobGive&)>;
+void run_lab_children(const std::string& lab_binary, const std::vector<std::string>& labs,
+                      const JobFeed& feed, const std::string& backend, const ChildLimits& limits,
+                      const RunAsUser* user, const ShaderCache& shader_cache, const LabReady& ready,
                       const RecordDone& done = {});
 
 // Bytes in regular files under `dir`, not following links.

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "grading/run/child.hpp"
+#include "grading/run/job_gate.hpp"
 #include "grading/run/run_as.hpp"
 #include "grading/sandbox/isolation.hpp"
 
@@ -83,6 +84,11 @@ ChildStart::ChildStart(const std::vector<std::string>& args, const std::string& 
 
 [[noreturn]] void exec_child(const ChildStart& c) {
     setpgid(0, 0);  // its own group: a timeout kills whatever it started too
+    // Out of the way of the descriptors set below, first.
+    int gate = c.gate;
+    if (gate >= 0 && gate <= kJobGateFd &&
+        (gate = fcntl(gate, F_DUPFD_CLOEXEC, kJobGateFd + 1)) < 0)
+        child_fail("fcntl of the job gate");
     if (c.cgroup_fds)
         for (const int fd : *c.cgroup_fds)
             if (write(fd, "0", 1) != 1) child_fail("joining the lab's cgroup");
@@ -91,6 +97,7 @@ ChildStart::ChildStart(const std::vector<std::string>& args, const std::string& 
     if (c.outputs >= 0 &&
         (c.outputs == kOutputFd ? fcntl(kOutputFd, F_SETFD, 0) : dup2(c.outputs, kOutputFd)) < 0)
         child_fail("dup2 of the output descriptor");
+    if (gate >= 0 && dup2(gate, kJobGateFd) < 0) child_fail("dup2 of the job gate");
     if (chdir(c.dir.c_str()) != 0) child_fail("chdir to the work directory");
     set_limit(RLIMIT_CPU, c.cpu_seconds, "RLIMIT_CPU");
     set_limit(RLIMIT_FSIZE, c.limits.file_cap, "RLIMIT_FSIZE");

@@ -37,6 +37,7 @@ struct ChildStart {
     int devnull = -1;  // its stdin
     int out = -1;      // its stdout and stderr
     int outputs = -1;  // its kOutputFd, when it sends its outputs
+    int gate = -1;     // its kJobGateFd, when its jobs come after its start
 };
 
 // The forked child, until it runs the lab (never returns: the lab runs, or

@@ -470,7 +470,14 @@ int main(int argc, char** argv) {
     // several labs), and --backend.
     std::vector<std::pair<std::string, std::string>> pairs;
     std::string backend;
-    int output_fd = -1;
+    int output_fd = -1, gate_fd = -1;
+    std::vector<char*> ungated = {argv[0]};  // argv without --job-gate-fd
+    for (int i = 1; i < argc; ++i)
+        if (std::string(argv[i]) == "--job-gate-fd" && i + 1 < argc)
+            gate_fd = std::atoi(argv[++i]);
+        else
+            ungated.push_back(argv[i]);
+    ungated.push_back(nullptr);
     for (int i = 1; i + 1 < argc; ++i) {
         if (std::string(argv[i]) == "--output-fd") output_fd = std::atoi(argv[i + 1]);
         if (std::string(argv[i]) == "--job") pairs.push_back({argv[i + 1], ""});
@@ -478,6 +485,14 @@ int main(int argc, char** argv) {
         if (std::string(argv[i]) == "--backend") backend = argv[i + 1];
     }
     const std::string mode = env("FAKE_LAB_MODE");
+    // Course writes the jobs after the start: every one, before any is read.
+    for (size_t k = 0; gate_fd >= 0 && k < pairs.size(); ++k) {
+        char byte = 0;
+        if (read(gate_fd, &byte, 1) != 1) {
+            std::fprintf(stderr, "fake_lab: the job gate ended before job %zu\n", k);
+            return 65;
+        }
+    }
     // The target's job, and the real lab's arguments for the others.
     json job;
     std::string out;
@@ -504,7 +519,7 @@ int main(int argc, char** argv) {
             a->args.insert(a->args.end(), {"--backend", backend});
     if (job.is_null()) {
         const std::string real = real_lab();
-        execv(real.c_str(), argv);
+        execv(real.c_str(), ungated.data());
         std::perror(("fake_lab: exec " + real).c_str());
         return 127;
     }
