@@ -211,7 +211,7 @@ LabResult judge_child(const LabData& lab, const LabPlan& plan, const LabChild& c
 // run_lab_children), and each judged, on as many threads as `threads()`
 // says, as soon as it has ended, while the child goes on with the next.
 std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const ChildSetup& setup,
-                                  const std::function<int()>& threads) {
+                                  const std::function<int()>& threads, FreeLater& free_later) {
     std::vector<LabPlan> plans(labs.size());
     std::vector<nlohmann::json> jobs(labs.size());
     std::vector<double> plan_seconds(labs.size());
@@ -265,6 +265,7 @@ std::vector<LabResult> grade_labs(const std::vector<const LabData*>& labs, const
         };
         isolate_shader_mistakes(*labs[i], jobs[i], passes, results[i].checks, spawn);
     }
+    free_later.free(std::move(plans));  // while the reports are made
     return results;
 }
 
@@ -323,7 +324,8 @@ std::vector<size_t> judge_not_built(const std::vector<LabData>& labs, const Grad
 // (shares(): the costliest first, to the least loaded): one process start per
 // worker, not per lab.
 void grade_in_children(const std::vector<LabData>& labs, const std::vector<size_t>& which,
-                       const ChildSetup& setup, const GradeOptions& options, GradeRun& run) {
+                       const ChildSetup& setup, const GradeOptions& options, GradeRun& run,
+                       FreeLater& free_later) {
     std::mutex print_mutex;
     std::atomic<int> in_flight{0};
     const std::function<int()> threads = [&in_flight] { return judging_threads(in_flight); };
@@ -333,7 +335,7 @@ void grade_in_children(const std::vector<LabData>& labs, const std::vector<size_
         std::vector<const LabData*> share;
         for (size_t k : share_of[w]) share.push_back(&labs[which[k]]);
         const InFlight flight(in_flight);
-        std::vector<LabResult> results = grade_labs(share, setup, threads);
+        std::vector<LabResult> results = grade_labs(share, setup, threads, free_later);
         for (size_t j = 0; j < results.size(); ++j) {
             LabResult& result = run.labs[which[share_of[w][j]]];
             result = std::move(results[j]);
@@ -380,7 +382,8 @@ int grade_command(const GradeOptions& options) {
     if (options.sandbox == GradeOptions::Sandbox::Strict) require_every_layer(run.sandbox);
 
     run.labs.resize(labs.size());
-    grade_in_children(labs, judge_not_built(labs, options, run), setup, options, run);
+    FreeLater free_later;  // what grading no longer needs, freed while the reports are made
+    grade_in_children(labs, judge_not_built(labs, options, run), setup, options, run, free_later);
 
     timing.stop(run);
     const auto reports_start = std::chrono::steady_clock::now();

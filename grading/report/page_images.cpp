@@ -68,7 +68,9 @@ const ImageTable::Entry& ImageTable::entry(const std::string& relative) {
     e.why = made.why;
     if (!made.uri.empty()) {
         e.css_class = "im" + std::to_string(entries_.size());
-        css_ += "." + e.css_class + " { background-image: url(" + made.uri + "); }\n";
+        // Appended piece by piece: a picture's URI is tens of kilobytes.
+        css_.append(".").append(e.css_class).append(" { background-image: url(");
+        css_.append(made.uri).append("); }\n");
         e.aspect = made.aspect;
     }
     return entries_.emplace(relative, e).first->second;

@@ -29,6 +29,10 @@ public:
     std::string figure(const std::string& caption, const std::string& relative,
                        const std::string& none = "");
     const std::string& css() const { return css_; }
+    // The <style> rules, moved out (the table is done with), and room for
+    // `bytes` of them made first.
+    std::string take_css() { return std::move(css_); }
+    void reserve(size_t bytes) { css_.reserve(bytes + bytes / 16); }
 
 private:
     struct Entry {

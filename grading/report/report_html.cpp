@@ -291,22 +291,25 @@ std::string sandbox_html(const std::vector<SandboxLayer>& layers) {
            "</ul></details>\n";
 }
 
-std::string html_report(const GradeRun& run, const std::string& out_dir) {
+std::vector<std::string> html_report(const GradeRun& run, const std::string& out_dir) {
     // The body first: it decides which images the <style> block must hold.
     ImageTable images(out_dir);
+    size_t uris = 0;
+    for (const LabResult& lab : run.labs)
+        for (const auto& [relative, image] : lab.page_images) uris += image.uri.size();
+    images.reserve(uris);
     std::ostringstream body;
     body << "<main>\n<h1>Grading report</h1>\n" << overview_html(run);
     for (size_t li = 0; li < run.labs.size(); ++li) {
         images.read_ahead(&run.labs[li].page_images);
         body << lab_html(run.labs[li], li, images);
     }
-    body << "</main>\n";
-    std::ostringstream h;
-    h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-      << "<title>Grading report: " << points(run.score()) << " / " << points(run.max_score())
-      << "</title>\n<style>" << kStyle << images.css() << "</style>\n</head>\n<body>\n"
-      << body.str() << "</body>\n</html>\n";
-    return h.str();
+    body << "</main>\n</body>\n</html>\n";
+    return {
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+        "<title>Grading report: " +
+            points(run.score()) + " / " + points(run.max_score()) + "</title>\n<style>" + kStyle,
+        images.take_css(), "</style>\n</head>\n<body>\n", body.str()};
 }
 
 }  // namespace grading::report

@@ -42,17 +42,20 @@ std::string junit_xml(const GradeRun& run);
 // `relative` (a path inside the output directory) joined to `out_dir`.
 std::string in_dir(const std::string& out_dir, const std::string& relative);
 
-// Writes `text` to `path`; throws fw::Error naming the path and the reason.
+// Writes `text` to `path` (`parts` one after another); throws fw::Error
+// naming the path and the reason.
 void write_text_file(const std::string& path, const std::string& text);
+void write_text_file(const std::string& path, const std::vector<std::string>& parts);
 
 // The sandbox's layers: in one line (summary.txt), and as a collapsed HTML
 // list (index.html, and the overview in results.json).
 std::string sandbox_line(const std::vector<SandboxLayer>& layers);
 std::string sandbox_html(const std::vector<SandboxLayer>& layers);
 
-// index.html: reads the images the checks name (relative to out_dir), but
-// those a lab's page_images already holds.
-std::string html_report(const GradeRun& run, const std::string& out_dir);
+// index.html, in parts to be written in turn (its pictures are megabytes,
+// never copied into one string): reads the images the checks name (relative
+// to out_dir), but those a lab's page_images already holds.
+std::vector<std::string> html_report(const GradeRun& run, const std::string& out_dir);
 
 // Every picture the page can show of `lab`'s checks, read from its files
 // under out_dir into lab.page_images: for a lab judged while the next one

@@ -183,8 +183,13 @@ std::string in_dir(const std::string& out_dir, const std::string& relative) {
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
+    write_text_file(path, std::vector<std::string>{text});
+}
+
+void write_text_file(const std::string& path, const std::vector<std::string>& parts) {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (file) file << text;
+    for (const std::string& text : parts)
+        if (file) file << text;
     if (file) file.close();
     if (!file)
         throw fw::Error("cannot write the report " + path + ": " + std::strerror(errno) +
@@ -339,10 +344,12 @@ void write_reports(const GradeRun& run, const std::string& out_dir, const Result
             throw fw::Error("cannot create the directory of --results " + results.path + ": " +
                             error.message());
     }
-    // The page, the longest to make, on a thread of its own while the others
-    // are made and written; all of them only read the run and the lab folders.
-    std::future<std::string> html =
-        std::async(std::launch::async, [&] { return report::html_report(run, out_dir); });
+    // The page, the longest to make, made and written on a thread of its own
+    // while the others are; all of them only read the run and the lab folders.
+    std::future<void> html = std::async(std::launch::async, [&] {
+        report::write_text_file(report::in_dir(out_dir, "index.html"),
+                                report::html_report(run, out_dir));
+    });
     report::write_text_file(report::in_dir(out_dir, "summary.txt"), summary_table(run));
     const std::string results_path =
         results.path.empty() ? report::in_dir(out_dir, "results.json") : results.path;
@@ -354,7 +361,7 @@ void write_reports(const GradeRun& run, const std::string& out_dir, const Result
         report::write_text_file(results_path,
                                 report::gradescope_results_json(run, out_dir, results.hidden_as));
     report::write_text_file(report::in_dir(out_dir, "junit.xml"), report::junit_xml(run));
-    report::write_text_file(report::in_dir(out_dir, "index.html"), html.get());
+    html.get();
 }
 
 }  // namespace grading

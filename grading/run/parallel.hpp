@@ -10,6 +10,7 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -104,6 +105,26 @@ private:
     bool done_ = false;
     std::exception_ptr failure_;  // written by the thread, read after join
     std::thread thread_;          // last: started once the rest is ready
+};
+
+// What is no longer needed but takes time to free (a run's plans: thousands
+// of unit cases), freed each on a thread of its own while the caller goes
+// on; the destructor waits for every one.
+class FreeLater {
+public:
+    template <class T>
+    void free(T garbage) {
+        auto held = std::make_shared<T>(std::move(garbage));
+        std::lock_guard<std::mutex> lock(mutex_);
+        freeing_.push_back(std::thread([held] { *held = T(); }));
+    }
+    ~FreeLater() {
+        for (std::thread& t : freeing_) t.join();
+    }
+
+private:
+    std::mutex mutex_;
+    std::vector<std::thread> freeing_;
 };
 
 // The CPUs this process may run on (its affinity mask, as nproc counts
