@@ -20,6 +20,7 @@
 #include "framework/lab_buffers.hpp"
 #include "framework/render.hpp"
 #include "framework/runner/output_queue.hpp"
+#include "framework/runner/unit_calls.hpp"
 #include "framework/trace/calls.hpp"
 #include "framework/trace/record.hpp"
 #include "framework/trace/usage.hpp"
@@ -139,48 +140,6 @@ void render_one(LabRenderer& renderer, const RegisteredLab& lab, const json& job
     if (read.depth) put_output(base + ".pfm", encode_pfm(out.depth));
     if (read.buffers) put_output(base + ".buffers.json", buffers_json(out.buffers));
     write_json(base + ".stats.json", out.stats);
-}
-
-// The lab's unit function `name`; null when it has none.
-const UnitFunction* find_unit(const RegisteredLab& lab, const std::string& name) {
-    for (const UnitFunction& f : lab.info.functions)
-        if (f.name == name) return &f;
-    return nullptr;
-}
-
-// units.json: every unit call of the job, by id, with its result or the
-// error it threw. The job gives the calls of one function together
-// ({"function", "first", "args": [...]}: call k's id is "u" and first + k),
-// so that a lab's thousands of cases cost the job an argument list each;
-// the results are written call by call, not built as one object first. An
-// id given twice is written twice, and a JSON reader keeps the last.
-std::string units_text(const RegisteredLab& lab, const json& groups) {
-    std::string text = "{";
-    for (const json& group : groups) {
-        const std::string name = group.value("function", "");
-        const UnitFunction* f = find_unit(lab, name);
-        const long first = group.value("first", 0L);
-        const auto args = group.find("args");
-        if (args == group.end() || !args->is_array()) continue;
-        for (size_t k = 0; k < args->size(); ++k) {
-            if (text.size() > 1) text += ',';
-            text += "\"u" + std::to_string(first + static_cast<long>(k)) + "\":";
-            const size_t entry = text.size();
-            try {
-                if (!f)
-                    throw Error("lab '" + lab.info.id + "' has no unit function '" + name + "'");
-                const json result = f->call((*args)[k]);
-                text += "{\"result\":";
-                append_json(text, result);
-                text += '}';
-            } catch (const std::exception& e) {
-                text.resize(entry);  // a result cut short by a string it cannot write
-                text += "{\"error\":" +
-                        json(e.what()).dump(-1, ' ', false, json::error_handler_t::replace) + "}";
-            }
-        }
-    }
-    return text + "}\n";
 }
 
 // The job's "shader_overrides" ({"NN_name/file.frag": "its text"}), in
