@@ -281,19 +281,6 @@ private:
     std::atomic<int>& count_;
 };
 
-// --not-built FILE: a JSON object from a lab's folder to what the compiler
-// said of its C++ (`course autograde`); none without the option.
-std::map<std::string, std::string> read_not_built(const std::string& file) {
-    if (file.empty()) return {};
-    try {
-        return nlohmann::json::parse(read_file(file)).get<std::map<std::string, std::string>>();
-    } catch (const std::exception& e) {
-        throw fw::UsageError("--not-built " + file +
-                             ": not a JSON object of lab folders and the compiler's output (" +
-                             e.what() + ")");
-    }
-}
-
 // The labs of --not-built judged into run.labs, at their index in `labs`:
 // no child runs them, every check fails, the status names the compiler's
 // first error and the log is the start of what the compiler said. Returns

@@ -3,6 +3,7 @@
 // two side by side.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,11 @@ namespace grading {
 // are read in parallel; of several in error, the first in order is told.
 std::vector<LabData> labs_to_grade(const std::vector<LabData>& all,
                                    const std::vector<std::string>& names);
+
+// --not-built FILE: a JSON object from a lab's folder to what the compiler
+// said of its C++ (`course autograde`); none without the option. A usage
+// error when it is not such an object.
+std::map<std::string, std::string> read_not_built(const std::string& file);
 
 // The sandbox's privileged layers where this machine allows them
 // (isolation.hpp): the namespaces, by a throwaway child set up as a lab's
