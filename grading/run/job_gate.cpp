@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <string_view>
 
 #include "framework/error.hpp"
 
@@ -44,14 +45,13 @@ bool JobGate::write_job(size_t i) {
         openat(dirs_[i], "JOB.json", O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
     if (fd < 0) return false;
     bool ok = !user_ || fchown(fd, user_->uid, user_->gid) == 0;
-    texts_[i] += '\n';
-    for (size_t at = 0; ok && at < texts_[i].size();) {
-        const ssize_t n = write(fd, texts_[i].data() + at, texts_[i].size() - at);
-        if (n < 0 && errno == EINTR) continue;
-        ok = n > 0;
-        if (ok) at += static_cast<size_t>(n);
-    }
-    texts_[i].pop_back();
+    for (const std::string_view part : {std::string_view(texts_[i]), std::string_view("\n")})
+        for (size_t at = 0; ok && at < part.size();) {
+            const ssize_t n = write(fd, part.data() + at, part.size() - at);
+            if (n < 0 && errno == EINTR) continue;
+            ok = n > 0;
+            if (ok) at += static_cast<size_t>(n);
+        }
     return close(fd) == 0 && ok;
 }
 
